@@ -1,0 +1,344 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_INTERNAL_LPFB_SOLVER_H
+#define CGAL_QD_INTERNAL_LPFB_SOLVER_H
+
+// Angle-space solver of the length-preserved free boundary (Wang, "Computing
+// Length-Preserved Free Boundary for Quasi-Developable Mesh Segmentation",
+// Sections 3.1-3.3). It works on one closed loop of "corners" (the border of the
+// patch after virtual cutting), knows nothing about meshes, and is tested on
+// its own.
+//
+// Unknowns: the planar inner angle theta_i at every corner i. Edge i runs from
+// corner i to corner i+1 with fixed length l_i; its direction is
+// phi_i = sum_{b<=i} (pi - theta_b), so every edge keeps its length by
+// construction.
+//
+// Objective: 1/2 sum (theta_i - a_i)^2.
+//
+// Constraints, in a full-rank form equivalent to the paper's Eq. (10):
+//  * linear "group" constraints with disjoint supports: sum_{i in g} theta_i = t_g.
+//    One group per original border loop (total turning +2pi for the outer loop,
+//    -2pi for a hole, i.e. t = (n_l -+ 2) pi with n_l counting the loop's original
+//    vertices) and one group per interior vertex of the cut graph (its copies
+//    fill a full turn, t = 2 pi).
+//  * two closure rows per original loop l: sum_{k in E_l} l_k (cos, sin) phi_k = 0.
+// Given the group constraints, the two copies of every cut edge are
+// antiparallel, so closing each loop makes every pair of copies coincide; the
+// paper's pair equations, whose Gram matrix is rank-deficient as soon as a cut
+// path has an edge, are never formed.
+//
+// Step (sequential linearly constrained programming, identity Hessian): the
+// minimum-norm correction delta = r - L^+(L r + c), r = a - theta. The group rows
+// are handled exactly by the projector P that removes group means; only the 2K
+// closure rows need a (rank-revealing) solve with S = N P N^T, K the number of
+// loops. Steps are globalised by an l1 merit function with backtracking and a
+// second-order correction; full steps are kept whenever they decrease the merit.
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+inline constexpr double pi = 3.14159265358979323846;
+
+struct Lpfb_problem
+{
+  std::vector<double> target_angle;  // a_i, one per corner
+  std::vector<double> edge_length;   // l_i, edge i from corner i to corner i+1
+  std::vector<int> edge_loop;        // original loop of edge i, -1 for a cut edge
+  std::vector<int> corner_group;     // group of corner i
+  std::vector<double> group_sum;     // t_g
+  int number_of_loops = 1;
+};
+
+struct Lpfb_options
+{
+  std::size_t max_iterations = 200;
+  double constraint_tolerance = 1e-11;  // on closure rows divided by loop length
+  double angle_tolerance = 1e-9;        // radians
+  bool line_search = true;
+};
+
+enum class Lpfb_status { CONVERGED, NOT_CONVERGED, FAILED };
+
+struct Lpfb_solution
+{
+  Lpfb_status status = Lpfb_status::FAILED;
+  std::vector<double> theta;
+  std::vector<std::array<double, 2>> position;  // per corner, corner 0 at the origin
+  std::size_t iterations = 0;
+  std::size_t backtracking_steps = 0;
+  double constraint_residual = 0;  // max |c|, closure rows relative to loop length
+  double objective = 0;            // 1/2 sum (theta - a)^2
+};
+
+class Lpfb_solver
+{
+public:
+  explicit Lpfb_solver(const Lpfb_problem& p) : pb_(p)
+  {
+    n_ = pb_.target_angle.size();
+    K_ = pb_.number_of_loops;
+    G_ = pb_.group_sum.size();
+    loop_length_.assign(K_, 0.);
+    for(std::size_t k = 0; k < n_; ++k)
+      if(pb_.edge_loop[k] >= 0)
+        loop_length_[pb_.edge_loop[k]] += pb_.edge_length[k];
+    group_size_.assign(G_, 0.);
+    for(std::size_t i = 0; i < n_; ++i)
+      group_size_[pb_.corner_group[i]] += 1.;
+    phi_.resize(n_);
+    N_.resize(2 * K_, n_);
+    NP_.resize(2 * K_, n_);
+  }
+
+  Lpfb_solution solve(const Lpfb_options& opt)
+  {
+    Lpfb_solution sol;
+    std::vector<double> theta = pb_.target_angle;
+    std::vector<double> c_lin(G_), trial_lin(G_);
+    Eigen::VectorXd c_N(2 * K_), trial_N(2 * K_);
+    std::vector<double> r(n_), delta(n_), trial(n_), correction(n_);
+    double mu = 1.;  // l1 penalty weight of the merit function
+    double step_scale = 1.;  // first trial step length, shortened on oscillation
+    std::vector<double> previous_delta;
+
+    evaluate(theta, c_lin, c_N);
+    for(;;) {
+      if(!all_finite(theta) || !c_N.allFinite()) { sol.status = Lpfb_status::FAILED; break; }
+      for(std::size_t i = 0; i < n_; ++i) r[i] = pb_.target_angle[i] - theta[i];
+      assemble_jacobian();
+      if(!step(r, c_lin, c_N, delta)) { sol.status = Lpfb_status::FAILED; break; }
+
+      const double viol = violation_inf(c_lin, c_N);
+      const double step_size = inf_norm(delta);
+#ifdef CGAL_QD_TRACE_LPFB
+      std::cerr << "it " << sol.iterations << " viol " << viol << " step " << step_size << " f " << objective(theta) << " bt " << sol.backtracking_steps << "\n";
+#endif
+      if(viol <= opt.constraint_tolerance && step_size <= opt.angle_tolerance) {
+        sol.status = Lpfb_status::CONVERGED;
+        break;
+      }
+      if(sol.iterations >= opt.max_iterations) { sol.status = Lpfb_status::NOT_CONVERGED; break; }
+      ++sol.iterations;
+
+      if(!opt.line_search) {
+        for(std::size_t i = 0; i < n_; ++i) theta[i] += delta[i];
+        evaluate(theta, c_lin, c_N);
+        continue;
+      }
+
+      // l1 merit m = f + mu |c|_1. Raise mu so that delta is a descent direction
+      // (Nocedal & Wright, Numerical Optimization, 2nd ed., Eq. 18.36, H = I).
+      const double c1 = violation_1(c_lin, c_N);
+      double g_dot_d = 0, d_dot_d = 0;
+      for(std::size_t i = 0; i < n_; ++i) { g_dot_d -= r[i] * delta[i]; d_dot_d += delta[i] * delta[i]; }
+      if(c1 > 0) mu = std::max(mu, 1.1 * (g_dot_d + 0.5 * d_dot_d) / (0.5 * c1));
+      const double merit0 = objective(theta) + mu * c1;
+      const double slope = g_dot_d - mu * c1;  // directional derivative, < 0
+
+      auto merit_at = [&](const std::vector<double>& th) {
+        evaluate(th, trial_lin, trial_N);
+        return objective(th) + mu * violation_1(trial_lin, trial_N);
+      };
+      const double armijo = 1e-4;
+      // changes of the merit below its rounding error are not measurable: near a
+      // solution of a strongly curved patch the decrease of a full step (about
+      // |delta|^2) falls under the rounding error of f and of mu |c|_1 (each
+      // closure residual is a sum of n terms of size up to 1)
+      const double eps = std::numeric_limits<double>::epsilon();
+      const double noise =
+          64 * eps * (std::abs(objective(theta)) + mu * std::sqrt(double(n_)) * double(2 * K_ + G_));
+      // Oscillation: successive steps pointing back and forth mean that the full
+      // step overshoots along some direction (the constraint curvature adds to
+      // the identity Hessian); such a flip-flop can leave the merit unchanged to
+      // rounding, so it is detected from the steps and the step is shortened.
+      if(!previous_delta.empty()) {
+        double dot = 0, pp = 0;
+        for(std::size_t i = 0; i < n_; ++i) { dot += delta[i] * previous_delta[i]; pp += previous_delta[i] * previous_delta[i]; }
+        const double cosine = dot / std::sqrt(pp * d_dot_d + 1e-300);
+        if(cosine < -0.3) step_scale = (std::max)(step_scale * 0.5, 1. / 64);
+        else if(cosine > 0.3) step_scale = (std::min)(step_scale * 2., 1.);
+      }
+      previous_delta = delta;
+      double t = step_scale;
+      bool accepted = false;
+      for(std::size_t i = 0; i < n_; ++i) trial[i] = theta[i] + t * delta[i];
+      double m = merit_at(trial);
+      if(std::isfinite(m) && m <= merit0 + armijo * t * slope + noise) accepted = true;
+      if(!accepted && std::isfinite(m) && t == 1.) {
+        // second-order correction: pull the trial point back onto the linearised
+        // constraints with the current Jacobian (avoids the Maratos effect)
+        std::fill(r.begin(), r.end(), 0.);
+        if(step(r, trial_lin, trial_N, correction)) {
+          std::vector<double> soc(n_);
+          for(std::size_t i = 0; i < n_; ++i) soc[i] = trial[i] + correction[i];
+          double ms = merit_at(soc);
+          if(std::isfinite(ms) && ms <= merit0 + armijo * slope + noise) { trial.swap(soc); accepted = true; }
+        }
+      }
+      while(!accepted && t > 1e-12) {
+        t *= 0.5;
+        ++sol.backtracking_steps;
+        for(std::size_t i = 0; i < n_; ++i) trial[i] = theta[i] + t * delta[i];
+        m = merit_at(trial);
+        if(std::isfinite(m) && m <= merit0 + armijo * t * slope + noise) accepted = true;
+      }
+      if(!accepted) { sol.status = Lpfb_status::NOT_CONVERGED; break; }
+      theta.swap(trial);
+      evaluate(theta, c_lin, c_N);
+    }
+
+    sol.constraint_residual = violation_inf(c_lin, c_N);
+    sol.objective = objective(theta);
+    sol.theta = theta;
+    layout(theta, sol.position);
+    if(!all_finite(sol.theta)) sol.status = Lpfb_status::FAILED;
+    return sol;
+  }
+
+  const std::vector<double>& loop_lengths() const { return loop_length_; }
+
+private:
+  static bool all_finite(const std::vector<double>& v)
+  {
+    for(double x : v) if(!std::isfinite(x)) return false;
+    return true;
+  }
+  static double inf_norm(const std::vector<double>& v)
+  {
+    double m = 0;
+    for(double x : v) m = std::max(m, std::abs(x));
+    return m;
+  }
+  double violation_inf(const std::vector<double>& c_lin, const Eigen::VectorXd& c_N) const
+  {
+    double m = c_N.size() ? c_N.cwiseAbs().maxCoeff() : 0.;
+    for(double x : c_lin) m = std::max(m, std::abs(x));
+    return m;
+  }
+  double violation_1(const std::vector<double>& c_lin, const Eigen::VectorXd& c_N) const
+  {
+    double s = c_N.cwiseAbs().sum();
+    for(double x : c_lin) s += std::abs(x);
+    return s;
+  }
+  double objective(const std::vector<double>& theta) const
+  {
+    double f = 0;
+    for(std::size_t i = 0; i < n_; ++i) {
+      const double d = theta[i] - pb_.target_angle[i];
+      f += 0.5 * d * d;
+    }
+    return f;
+  }
+
+  // edge directions and constraint values at theta
+  void evaluate(const std::vector<double>& theta, std::vector<double>& c_lin, Eigen::VectorXd& c_N)
+  {
+    std::fill(c_lin.begin(), c_lin.end(), 0.);
+    c_N.setZero();
+    double turning = 0;
+    for(std::size_t k = 0; k < n_; ++k) {
+      turning += pi - theta[k];
+      phi_[k] = turning;
+      c_lin[pb_.corner_group[k]] += theta[k];
+      const int l = pb_.edge_loop[k];
+      if(l >= 0) {
+        c_N[2 * l] += pb_.edge_length[k] * std::cos(turning);
+        c_N[2 * l + 1] += pb_.edge_length[k] * std::sin(turning);
+      }
+    }
+    for(std::size_t g = 0; g < G_; ++g) c_lin[g] -= pb_.group_sum[g];
+    for(int l = 0; l < K_; ++l) {
+      c_N[2 * l] /= loop_length_[l];
+      c_N[2 * l + 1] /= loop_length_[l];
+    }
+  }
+
+  // closure Jacobian by suffix sums (d phi_k / d theta_i = -1 for k >= i), and
+  // its projection N P (group means removed from every row)
+  void assemble_jacobian()
+  {
+    std::vector<double> ssin(K_, 0.), scos(K_, 0.);
+    for(std::size_t i = n_; i-- > 0;) {
+      const int l = pb_.edge_loop[i];
+      if(l >= 0) {
+        ssin[l] += pb_.edge_length[i] * std::sin(phi_[i]) / loop_length_[l];
+        scos[l] += pb_.edge_length[i] * std::cos(phi_[i]) / loop_length_[l];
+      }
+      for(int q = 0; q < K_; ++q) {
+        N_(2 * q, i) = ssin[q];
+        N_(2 * q + 1, i) = -scos[q];
+      }
+    }
+    NP_ = N_;
+    std::vector<double> mean(G_);
+    for(int row = 0; row < 2 * K_; ++row) {
+      std::fill(mean.begin(), mean.end(), 0.);
+      for(std::size_t i = 0; i < n_; ++i) mean[pb_.corner_group[i]] += N_(row, i);
+      for(std::size_t g = 0; g < G_; ++g) mean[g] /= group_size_[g];
+      for(std::size_t i = 0; i < n_; ++i) NP_(row, i) -= mean[pb_.corner_group[i]];
+    }
+  }
+
+  // delta = r - L^+ (L r + c) with L = [group rows; N]
+  bool step(const std::vector<double>& r, const std::vector<double>& c_lin,
+            const Eigen::VectorXd& c_N, std::vector<double>& delta)
+  {
+    // minimum-norm solution of the group rows, and the projection of r
+    std::vector<double> rmean(G_, 0.);
+    for(std::size_t i = 0; i < n_; ++i) rmean[pb_.corner_group[i]] += r[i];
+    for(std::size_t g = 0; g < G_; ++g) rmean[g] /= group_size_[g];
+    Eigen::VectorXd dp(n_), Pr(n_);
+    for(std::size_t i = 0; i < n_; ++i) {
+      const int g = pb_.corner_group[i];
+      dp[i] = -c_lin[g] / group_size_[g];
+      Pr[i] = r[i] - rmean[g];
+    }
+    const Eigen::VectorXd rhs = NP_ * Pr + c_N + N_ * dp;
+    const Eigen::MatrixXd S = NP_ * NP_.transpose();
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(S);
+    cod.setThreshold(1e-12);
+    const Eigen::VectorXd lambda = cod.solve(rhs);
+    if(!lambda.allFinite()) return false;
+    const Eigen::VectorXd d = dp + Pr - NP_.transpose() * lambda;
+    delta.assign(d.data(), d.data() + n_);
+    return true;
+  }
+
+  void layout(const std::vector<double>& theta, std::vector<std::array<double, 2>>& pos) const
+  {
+    // corner 0 at the origin, edge 0 along +x
+    pos.assign(n_, {0., 0.});
+    double turning = 0, x = 0, y = 0;
+    for(std::size_t k = 0; k < n_; ++k) {
+      turning += pi - theta[k];
+      if(k == 0) turning = 0;
+      pos[k] = {x, y};
+      x += pb_.edge_length[k] * std::cos(turning);
+      y += pb_.edge_length[k] * std::sin(turning);
+    }
+  }
+
+  const Lpfb_problem& pb_;
+  std::size_t n_ = 0, G_ = 0;
+  int K_ = 1;
+  std::vector<double> loop_length_, group_size_, phi_;
+  Eigen::MatrixXd N_, NP_;
+};
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_INTERNAL_LPFB_SOLVER_H

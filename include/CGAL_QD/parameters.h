@@ -1,0 +1,58 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_PARAMETERS_H
+#define CGAL_QD_PARAMETERS_H
+
+/// \file parameters.h
+/// Named parameters of CGAL_QD. They build genuine CGAL named-parameter packs,
+/// so they chain with CGAL's own parameters:
+/// `CGAL_QD::parameters::constraint_tolerance(1e-12).number_of_iterations(50)`,
+/// or, with CGAL's first, `CGAL_QD::parameters::constraint_tolerance(1e-12,
+/// CGAL::parameters::number_of_iterations(50))`.
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL_QD {
+namespace internal_np {
+
+struct constraint_tolerance_t {};
+struct angle_tolerance_t {};
+struct use_line_search_t {};
+
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_QD_ADD_NAMED_PARAMETER(NAME)                                              \
+  template <class T>                                                                  \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)      \
+  {                                                                                   \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(value);          \
+  }                                                                                   \
+  template <class T, class A, class B, class C>                                       \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                           \
+                                  CGAL::Named_function_parameters<A, B, C>>           \
+  NAME(const T& value, const CGAL::Named_function_parameters<A, B, C>& rest)          \
+  {                                                                                   \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                  \
+                                           CGAL::Named_function_parameters<A, B, C>>( \
+        value, rest);                                                                 \
+  }
+
+/// relative tolerance on the closure constraints of the length-preserved free
+/// boundary (closure residual divided by the loop length). Default: `1e-11`.
+CGAL_QD_ADD_NAMED_PARAMETER(constraint_tolerance)
+/// tolerance, in radians, on the optimality of the border angles. Default: `1e-9`.
+CGAL_QD_ADD_NAMED_PARAMETER(angle_tolerance)
+/// whether the border solver globalises its steps by a merit-function line
+/// search. Default: `true`. Switching it off gives the plain full-step
+/// iteration of the paper, which can oscillate on strongly curved patches.
+CGAL_QD_ADD_NAMED_PARAMETER(use_line_search)
+
+#undef CGAL_QD_ADD_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_PARAMETERS_H

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs what CGAL_QD needs on a Debian machine (run as root).
+# Core: CGAL 5.5, Eigen 3.4, Boost.Graph, Boost.Test, CMake, a C++17 compiler.
+# libcgal-demo brings CGAL's real test meshes; ccache speeds up rebuilds.
+set -euo pipefail
+packages=(build-essential cmake ccache libcgal-dev libeigen3-dev libboost-graph-dev
+          libboost-test-dev libcgal-demo)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update
+  apt-get install -y --no-install-recommends "${missing[@]}"
+fi
