@@ -660,6 +660,35 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(cgal_parameterize_with_lpfb_border, Mesh, Mesh_typ
   BOOST_TEST(bad == SMP::ERROR_WRONG_PARAMETER);
 }
 
+BOOST_AUTO_TEST_CASE(cgal_dcm_on_a_patch_with_a_hole)
+{
+  // CGAL 5.5 keeps only the outer loop fixed and re-solves the hole's vertices
+  // as inner vertices: the result is still a valid map (documented behaviour)
+  Surface_mesh tm = make<Surface_mesh>(grid(16, 16, bump(0.3), holes({{5, 9, 5, 9}})));
+  Uv_store<Surface_mesh> uv;
+  SMP::Discrete_conformal_map_parameterizer_3<Surface_mesh, QD::LPFB_border_parameterizer_3<Surface_mesh>> p;
+  const auto err = SMP::parameterize(tm, p, CGAL::Polygon_mesh_processing::longest_border(tm).first, uv.pmap());
+  BOOST_REQUIRE(err == SMP::OK);
+  for(auto v : vertices(tm)) BOOST_TEST((std::isfinite(uv.at(v)[0]) && std::isfinite(uv.at(v)[1])));
+  BOOST_TEST(flipped_faces(tm, uv) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(caller_vertex_index_map)
+{
+  // a Polyhedron_3 without internal indices, with the caller's index map
+  const Polyhedron tm = make<Polyhedron>(grid(10, 10, bump(0.3), holes({{3, 6, 3, 6}})));
+  std::map<boost::graph_traits<Polyhedron>::vertex_descriptor, std::size_t> index;
+  for(auto v : vertices(tm)) index.emplace(v, index.size());
+  Uv_store<Polyhedron> a, b;
+  const auto ra = QD::compute_length_preserved_free_boundary(
+      tm, a.pmap(), CGAL::parameters::vertex_index_map(boost::make_assoc_property_map(index)));
+  const auto rb = QD::compute_length_preserved_free_boundary(tm, b.pmap(), CGAL::parameters::default_values());
+  BOOST_REQUIRE(ra);
+  BOOST_REQUIRE(rb);
+  BOOST_TEST(a.map.size() == b.map.size());
+  for(auto& kv : a.map) BOOST_TEST(std::hypot(a.at(kv.first)[0] - b.at(kv.first)[0], a.at(kv.first)[1] - b.at(kv.first)[1]) < 1e-12);
+}
+
 #ifdef CGAL_QD_DEMO_MESH_DIR
 // A patch grown on a real mesh as a segmentation would leave it: a ball of
 // faces around a seed, whose border is then cleaned of one-face notches (an

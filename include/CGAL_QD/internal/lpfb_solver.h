@@ -97,7 +97,8 @@ public:
     group_size_.assign(G_, 0.);
     for(std::size_t i = 0; i < n_; ++i)
       group_size_[pb_.corner_group[i]] += 1.;
-    phi_.resize(n_);
+    cos_.assign(n_, 0.);
+    sin_.assign(n_, 0.);
     N_.resize(2 * K_, n_);
     NP_.resize(2 * K_, n_);
   }
@@ -251,12 +252,13 @@ private:
     double turning = 0;
     for(std::size_t k = 0; k < n_; ++k) {
       turning += pi - theta[k];
-      phi_[k] = turning;
       c_lin[pb_.corner_group[k]] += theta[k];
       const int l = pb_.edge_loop[k];
       if(l >= 0) {
-        c_N[2 * l] += pb_.edge_length[k] * std::cos(turning);
-        c_N[2 * l + 1] += pb_.edge_length[k] * std::sin(turning);
+        cos_[k] = std::cos(turning);
+        sin_[k] = std::sin(turning);
+        c_N[2 * l] += pb_.edge_length[k] * cos_[k];
+        c_N[2 * l + 1] += pb_.edge_length[k] * sin_[k];
       }
     }
     for(std::size_t g = 0; g < G_; ++g) c_lin[g] -= pb_.group_sum[g];
@@ -267,15 +269,16 @@ private:
   }
 
   // closure Jacobian by suffix sums (d phi_k / d theta_i = -1 for k >= i), and
-  // its projection N P (group means removed from every row)
+  // its projection N P (group means removed from every row); uses the
+  // directions of the last evaluate(), which is always at the current theta
   void assemble_jacobian()
   {
     std::vector<double> ssin(K_, 0.), scos(K_, 0.);
     for(std::size_t i = n_; i-- > 0;) {
       const int l = pb_.edge_loop[i];
       if(l >= 0) {
-        ssin[l] += pb_.edge_length[i] * std::sin(phi_[i]) / loop_length_[l];
-        scos[l] += pb_.edge_length[i] * std::cos(phi_[i]) / loop_length_[l];
+        ssin[l] += pb_.edge_length[i] * sin_[i] / loop_length_[l];
+        scos[l] += pb_.edge_length[i] * cos_[i] / loop_length_[l];
       }
       for(int q = 0; q < K_; ++q) {
         N_(2 * q, i) = ssin[q];
@@ -334,7 +337,7 @@ private:
   const Lpfb_problem& pb_;
   std::size_t n_ = 0, G_ = 0;
   int K_ = 1;
-  std::vector<double> loop_length_, group_size_, phi_;
+  std::vector<double> loop_length_, group_size_, cos_, sin_;
   Eigen::MatrixXd N_, NP_;
 };
 
