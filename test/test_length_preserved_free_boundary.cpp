@@ -164,6 +164,19 @@ std::vector<Loop_check> check_loops(const Mesh& tm, const Uv_store<Mesh>& uv, st
   return out;
 }
 
+// a single-loop layout: lengths kept, total turning 2 pi, counter-clockwise, simple
+template <class Mesh>
+void expect_simple_positive_loop(const Mesh& tm, const Uv_store<Mesh>& uv)
+{
+  std::size_t crossings = 0;
+  const auto loops = check_loops(tm, uv, crossings);
+  BOOST_REQUIRE(loops.size() == 1u);
+  BOOST_TEST(loops[0].max_length_error < 1e-10);
+  BOOST_TEST(std::abs(loops[0].turning - 2 * pi) < 1e-9);
+  BOOST_TEST(loops[0].area > 0);
+  BOOST_TEST(crossings == 0u);
+}
+
 template <class Mesh>
 Mesh make(const Soup& s)
 {
@@ -381,12 +394,7 @@ BOOST_AUTO_TEST_CASE(sphere_cap_wider_than_hemisphere_converges)
   const auto r = QD::compute_length_preserved_free_boundary(tm, uv.pmap(), CGAL::parameters::default_values());
   BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
   BOOST_TEST(r.constraint_residual < 1e-10);
-  std::size_t crossings = 0;
-  const auto loops = check_loops(tm, uv, crossings);
-  BOOST_TEST(loops[0].max_length_error < 1e-10);
-  BOOST_TEST(std::abs(loops[0].turning - 2 * pi) < 1e-9);
-  BOOST_TEST(loops[0].area > 0);
-  BOOST_TEST(crossings == 0u);
+  expect_simple_positive_loop(tm, uv);
   BOOST_TEST_MESSAGE("cap 135 deg: " << r.iterations << " iterations");
 }
 
@@ -401,12 +409,7 @@ BOOST_AUTO_TEST_CASE(oscillating_full_steps_are_globalised)
   BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
   BOOST_TEST(r.iterations < 60u);
   BOOST_TEST(r.constraint_residual < 1e-10);
-  std::size_t crossings = 0;
-  const auto loops = check_loops(tm, uv, crossings);
-  BOOST_TEST(loops[0].max_length_error < 1e-10);
-  BOOST_TEST(std::abs(loops[0].turning - 2 * pi) < 1e-9);
-  BOOST_TEST(loops[0].area > 0);
-  BOOST_TEST(crossings == 0u);
+  expect_simple_positive_loop(tm, uv);
   BOOST_TEST_MESSAGE("tilted cap: " << r.iterations << " iterations");
 
   Uv_store<Surface_mesh> uv2;
