@@ -18,6 +18,8 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
+#include <set>
 #include <random>
 #include <vector>
 
@@ -170,6 +172,117 @@ inline std::function<P3(double, double)> tilted_cap(double b0, double b1, double
 inline std::function<P3(double, double)> flat_disk(double radius)
 {
   return [=](double rho, double phi) { return P3{radius * rho * std::cos(phi), radius * rho * std::sin(phi), 0.}; };
+}
+
+// Merges points that coincide (to 1e-9) and re-indexes the triangles.
+inline Soup merge_coincident_points(const Soup& in)
+{
+  Soup out;
+  std::map<std::array<long long, 3>, std::size_t> index;
+  std::vector<std::size_t> remap(in.points.size());
+  for(std::size_t i = 0; i < in.points.size(); ++i) {
+    const P3& p = in.points[i];
+    const std::array<long long, 3> key = {std::llround(p[0] * 1e9), std::llround(p[1] * 1e9), std::llround(p[2] * 1e9)};
+    auto it = index.find(key);
+    if(it == index.end()) {
+      it = index.emplace(key, out.points.size()).first;
+      out.points.push_back(p);
+    }
+    remap[i] = it->second;
+  }
+  for(const Tri& t : in.triangles) out.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+  return out;
+}
+
+// Cuts a soup open along the given edges (pairs of point indices): around every
+// vertex, the faces are grouped into wedges separated by cut edges (or borders),
+// and each wedge gets its own copy of the vertex.
+inline Soup cut_open(const Soup& in, const std::set<std::pair<std::size_t, std::size_t>>& cut)
+{
+  auto is_cut = [&](std::size_t a, std::size_t b) { return cut.count({a, b}) || cut.count({b, a}); };
+  const std::size_t nc = 3 * in.triangles.size();
+  std::vector<std::size_t> parent(nc);
+  for(std::size_t i = 0; i < nc; ++i) parent[i] = i;
+  std::function<std::size_t(std::size_t)> find = [&](std::size_t x) {
+    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  // corners of the two faces of every uncut edge, at both of its vertices
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<std::size_t, int>>> edge_faces;
+  for(std::size_t f = 0; f < in.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t a = in.triangles[f][k], b = in.triangles[f][(k + 1) % 3];
+      edge_faces[{(std::min)(a, b), (std::max)(a, b)}].push_back({f, k});
+    }
+  for(const auto& e : edge_faces) {
+    if(e.second.size() != 2 || is_cut(e.first.first, e.first.second)) continue;
+    for(std::size_t endpoint : {e.first.first, e.first.second}) {
+      std::size_t c[2];
+      for(int s = 0; s < 2; ++s) {
+        const auto& fk = e.second[s];
+        for(int k = 0; k < 3; ++k)
+          if(in.triangles[fk.first][k] == endpoint) c[s] = 3 * fk.first + k;
+      }
+      parent[find(c[0])] = find(c[1]);
+    }
+  }
+  Soup out;
+  std::map<std::size_t, std::size_t> copy_of_class;
+  out.triangles.resize(in.triangles.size());
+  for(std::size_t f = 0; f < in.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t cls = find(3 * f + k);
+      auto it = copy_of_class.find(cls);
+      if(it == copy_of_class.end()) {
+        it = copy_of_class.emplace(cls, out.points.size()).first;
+        out.points.push_back(in.points[in.triangles[f][k]]);
+      }
+      out.triangles[f][k] = it->second;
+    }
+  return out;
+}
+
+// The surface of the unit cube, each side an n x n grid, opened along five
+// edges forming a tree: three edges of the top square and two vertical edges.
+inline Soup cube_opened_by_five_cuts(std::size_t n)
+{
+  Soup s;
+  auto side = [&](P3 o, P3 du, P3 dv) {
+    Soup g = grid(n, n, [=](double u, double v) {
+      return P3{o[0] + u * du[0] + v * dv[0], o[1] + u * du[1] + v * dv[1], o[2] + u * du[2] + v * dv[2]};
+    });
+    const std::size_t off = s.points.size();
+    for(const P3& p : g.points) s.points.push_back(p);
+    for(const Tri& t : g.triangles) s.triangles.push_back({t[0] + off, t[1] + off, t[2] + off});
+  };
+  // outward normals: du x dv points out of the cube
+  side({0, 0, 0}, {0, 1, 0}, {1, 0, 0});  // bottom, normal -z
+  side({0, 0, 1}, {1, 0, 0}, {0, 1, 0});  // top, +z
+  side({0, 0, 0}, {1, 0, 0}, {0, 0, 1});  // y = 0, normal -y
+  side({0, 1, 0}, {0, 0, 1}, {1, 0, 0});  // y = 1, +y
+  side({0, 0, 0}, {0, 0, 1}, {0, 1, 0});  // x = 0, -x
+  side({1, 0, 0}, {0, 1, 0}, {0, 0, 1});  // x = 1, +x
+  Soup closed = merge_coincident_points(s);
+  // the cut tree: (0,0,1)-(1,0,1)-(1,1,1)-(0,1,1), (0,0,0)-(0,0,1), (1,1,0)-(1,1,1)
+  const std::vector<std::pair<P3, P3>> tree = {{{0, 0, 1}, {1, 0, 1}}, {{1, 0, 1}, {1, 1, 1}}, {{1, 1, 1}, {0, 1, 1}},
+                                               {{0, 0, 0}, {0, 0, 1}}, {{1, 1, 0}, {1, 1, 1}}};
+  auto on_segment = [](const P3& p, const std::pair<P3, P3>& e) {
+    double t = -1;
+    for(int c = 0; c < 3; ++c) {
+      const double d = e.second[c] - e.first[c];
+      if(d != 0) t = (p[c] - e.first[c]) / d;
+      else if(std::abs(p[c] - e.first[c]) > 1e-12) return false;
+    }
+    return t >= -1e-12 && t <= 1 + 1e-12;
+  };
+  std::set<std::pair<std::size_t, std::size_t>> cut;
+  for(const Tri& t : closed.triangles)
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t a = t[k], b = t[(k + 1) % 3];
+      for(const auto& e : tree)
+        if(on_segment(closed.points[a], e) && on_segment(closed.points[b], e)) cut.insert({a, b});
+    }
+  return cut_open(closed, cut);
 }
 
 // applies p -> s R p + t with a random rotation R

@@ -6,6 +6,7 @@
 #include <boost/mpl/list.hpp>
 
 #include "mesh_generators.h"
+#include "test_utils.h"
 
 #include <CGAL_QD/LPFB_border_parameterizer_3.h>
 #include <CGAL_QD/length_preserved_free_boundary.h>
@@ -34,31 +35,6 @@ using namespace qd_test;
 typedef boost::mpl::list<Surface_mesh, Polyhedron, Cartesian_surface_mesh> Mesh_types;
 
 namespace {
-
-struct UV { double x = 0, y = 0; };
-
-// a UV store keyed by vertex, usable with every mesh type
-template <class Mesh>
-struct Uv_store
-{
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  typedef typename CGAL::Kernel_traits<typename boost::property_traits<
-      typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type>::Kernel::Point_2 Point_2;
-  std::unordered_map<vertex_descriptor, Point_2> map;
-  boost::associative_property_map<std::unordered_map<vertex_descriptor, Point_2>> pmap() { return {map}; }
-  std::array<double, 2> at(vertex_descriptor v) const
-  {
-    const Point_2& p = map.at(v);
-    return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
-  }
-};
-
-template <class Mesh>
-std::array<double, 3> p3(const Mesh& tm, typename boost::graph_traits<Mesh>::vertex_descriptor v)
-{
-  const auto& p = get(CGAL::vertex_point, tm, v);
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-}
 
 template <class Mesh>
 std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> border_loops(const Mesh& tm)
@@ -177,13 +153,6 @@ void expect_simple_positive_loop(const Mesh& tm, const Uv_store<Mesh>& uv)
   BOOST_TEST(crossings == 0u);
 }
 
-template <class Mesh>
-Mesh make(const Soup& s)
-{
-  Mesh tm;
-  BOOST_REQUIRE(build(s, tm));
-  return tm;
-}
 
 // surface angle sum at every border vertex, by vertex
 template <class Mesh>

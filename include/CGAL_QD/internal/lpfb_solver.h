@@ -36,6 +36,8 @@
 // loops. Steps are globalised by an l1 merit function with backtracking and a
 // second-order correction; full steps are kept whenever they decrease the merit.
 
+#include <CGAL_QD/internal/constants.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -48,8 +50,6 @@
 
 namespace CGAL_QD {
 namespace internal {
-
-inline constexpr double pi = 3.14159265358979323846;
 
 struct Lpfb_problem
 {

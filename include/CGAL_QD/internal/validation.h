@@ -9,6 +9,7 @@
 // face; `require_single_component` also rejects meshes with other components.
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/internal/constants.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/helpers.h>

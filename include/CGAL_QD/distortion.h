@@ -1,0 +1,351 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_DISTORTION_H
+#define CGAL_QD_DISTORTION_H
+
+/// \file distortion.h
+/// Distortion measures of a UV map on any triangle mesh: area distortion A(Omega),
+/// Sander's L2 and Linf stretch, angle distortion, border length and angle
+/// errors Pi_L and Pi_theta, flipped faces and exact global overlap S(Omega).
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/internal/validation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// all measures of a UV map, computed by `compute_distortion()` in one pass.
+template <class TriangleMesh>
+struct Distortion_report
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+
+  Error_code status = Error_code::OK;
+  std::size_t number_of_faces = 0;
+  double area_3d = 0;  ///< sum of the 3D face areas
+  double area_2d = 0;  ///< sum of the unsigned 2D face areas
+  /// A(Omega) = |sum |A_2D| - sum A_3D| / sum A_3D x 100 (paper Eq. 19), in percent
+  double area_distortion = 0;
+  /// Sander et al. 2001 L2 stretch of the map 2D -> 3D, sqrt(sum L2(T)^2 A_3D(T) / sum A_3D(T));
+  /// 1 only when the map is an isometry, smaller when the UVs are larger than the surface
+  double l2_stretch = 0;
+  /// `l2_stretch` times sqrt(area_2d / area_3d): invariant to a uniform scale of the UVs, >= 1
+  double l2_stretch_normalized = 0;
+  /// largest singular value of the 2D -> 3D map over all faces
+  double linf_stretch = 0;
+  /// mean |alpha_2D - alpha_3D| over all face corners, in radians
+  double angle_distortion = 0;
+  /// Pi_L: mean |l_2D - l_3D| over the edges of every border loop (paper Eq. 1)
+  double boundary_length_error = 0;
+  /// Pi_theta: mean |a_v - theta_v| over the vertices of every border loop, in radians (paper Eq. 2)
+  double boundary_angle_error = 0;
+  /// faces whose 2D orientation is not positive (zero area included)
+  std::size_t flipped_faces = 0;
+  /// interior vertices whose 1-ring wraps around them more than once in 2D
+  std::size_t branch_vertices = 0;
+  /// pairs of border halfedges whose 2D segments cross or touch
+  std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> border_crossings;
+  /// S(Omega): the map is not one-to-one (a flipped face, a branch vertex or a border crossing)
+  bool overlap = false;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+namespace internal {
+
+struct Distortion_options
+{
+  bool border_crossings = true;
+};
+
+template <class UVMap, class V>
+std::array<double, 2> uv_of(const UVMap& uv, const V& v)
+{
+  const auto& p = get(uv, v);
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+}
+
+inline double angle_between(const double* u, const double* w, int dim)
+{
+  double dot = 0, c = 0;
+  if(dim == 2) {
+    dot = u[0] * w[0] + u[1] * w[1];
+    c = std::abs(u[0] * w[1] - u[1] * w[0]);
+  } else {
+    dot = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
+    const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+    c = std::sqrt(x * x + y * y + z * z);
+  }
+  return std::atan2(c, dot);
+}
+
+template <class TriangleMesh, class VertexUVMap, class VPM, class VIM>
+Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, const VertexUVMap& uv,
+                                                        const VPM& vpm, const VIM& vim,
+                                                        const Distortion_options& opt)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+
+  Distortion_report<TriangleMesh> rep;
+  if(faces(tm).empty()) { rep.status = Error_code::EMPTY_MESH; return rep; }
+  for(face_descriptor f : faces(tm))
+    if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3) {
+      rep.status = Error_code::NOT_TRIANGLE_MESH;
+      return rep;
+    }
+  for(vertex_descriptor v : vertices(tm)) {
+    if(halfedge(v, tm) == GT::null_halfedge()) continue;
+    const auto p = point_of<TriangleMesh>(v, vpm);
+    const auto q = uv_of(uv, v);
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(q[0]) ||
+       !std::isfinite(q[1])) {
+      rep.status = Error_code::INVALID_COORDINATES;
+      return rep;
+    }
+  }
+
+  const std::size_t nv = num_vertices(tm);
+  std::vector<double> angle_sum_2d(nv, 0.), angle_sum_3d(nv, 0.);
+  double stretch2 = 0, angle_error = 0;
+  std::size_t corners = 0;
+  bool infinite_stretch = false;
+  for(face_descriptor f : faces(tm)) {
+    ++rep.number_of_faces;
+    const halfedge_descriptor h = halfedge(f, tm);
+    const vertex_descriptor v[3] = {source(h, tm), target(h, tm), target(next(h, tm), tm)};
+    std::array<double, 3> q[3];
+    std::array<double, 2> s[3];
+    for(int k = 0; k < 3; ++k) { q[k] = point_of<TriangleMesh>(v[k], vpm); s[k] = uv_of(uv, v[k]); }
+    const double a3 = 0.5 * double_area3(q[0], q[1], q[2]);
+    const double a2s = 0.5 * ((s[1][0] - s[0][0]) * (s[2][1] - s[0][1]) - (s[2][0] - s[0][0]) * (s[1][1] - s[0][1]));
+    rep.area_3d += a3;
+    rep.area_2d += std::abs(a2s);
+    if(CGAL::orientation(EK::Point_2(s[0][0], s[0][1]), EK::Point_2(s[1][0], s[1][1]),
+                         EK::Point_2(s[2][0], s[2][1])) != CGAL::LEFT_TURN)
+      ++rep.flipped_faces;
+
+    // Sander et al. 2001: S_s, S_t are the partial derivatives of the 2D -> 3D map
+    if(a2s == 0) {
+      infinite_stretch = true;
+    } else {
+      const double d = 2 * a2s;
+      double Ss[3], St[3];
+      for(int c = 0; c < 3; ++c) {
+        Ss[c] = (q[0][c] * (s[1][1] - s[2][1]) + q[1][c] * (s[2][1] - s[0][1]) + q[2][c] * (s[0][1] - s[1][1])) / d;
+        St[c] = (q[0][c] * (s[2][0] - s[1][0]) + q[1][c] * (s[0][0] - s[2][0]) + q[2][c] * (s[1][0] - s[0][0])) / d;
+      }
+      const double a = Ss[0] * Ss[0] + Ss[1] * Ss[1] + Ss[2] * Ss[2];
+      const double b = Ss[0] * St[0] + Ss[1] * St[1] + Ss[2] * St[2];
+      const double c = St[0] * St[0] + St[1] * St[1] + St[2] * St[2];
+      const double big = std::sqrt(0.5 * ((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)));
+      stretch2 += 0.5 * (a + c) * a3;
+      rep.linf_stretch = (std::max)(rep.linf_stretch, big);
+    }
+
+    for(int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double u3[3] = {q[i][0] - q[k][0], q[i][1] - q[k][1], q[i][2] - q[k][2]};
+      const double w3[3] = {q[j][0] - q[k][0], q[j][1] - q[k][1], q[j][2] - q[k][2]};
+      const double u2[2] = {s[i][0] - s[k][0], s[i][1] - s[k][1]};
+      const double w2[2] = {s[j][0] - s[k][0], s[j][1] - s[k][1]};
+      const double al3 = angle_between(u3, w3, 3), al2 = angle_between(u2, w2, 2);
+      angle_error += std::abs(al2 - al3);
+      ++corners;
+      angle_sum_2d[get(vim, v[k])] += al2;
+      angle_sum_3d[get(vim, v[k])] += al3;
+    }
+  }
+  rep.area_distortion = rep.area_3d > 0 ? std::abs(rep.area_2d - rep.area_3d) / rep.area_3d * 100. : 0.;
+  if(infinite_stretch) {
+    rep.l2_stretch = rep.l2_stretch_normalized = rep.linf_stretch = std::numeric_limits<double>::infinity();
+  } else {
+    rep.l2_stretch = std::sqrt(stretch2 / rep.area_3d);
+    rep.l2_stretch_normalized = rep.l2_stretch * std::sqrt(rep.area_2d / rep.area_3d);
+  }
+  rep.angle_distortion = angle_error / corners;
+
+  // border loops: Pi_L, Pi_theta; interior vertices: branch points
+  std::vector<halfedge_descriptor> border;
+  std::vector<char> on_border(nv, 0);
+  for(halfedge_descriptor h : halfedges(tm))
+    if(is_border(h, tm)) {
+      border.push_back(h);
+      on_border[get(vim, target(h, tm))] = 1;
+    }
+  for(vertex_descriptor v : vertices(tm)) {
+    const std::size_t i = get(vim, v);
+    if(halfedge(v, tm) != GT::null_halfedge() && !on_border[i] && angle_sum_2d[i] > 3 * pi)
+      ++rep.branch_vertices;
+  }
+  double length_error = 0, theta_error = 0;
+  for(halfedge_descriptor b : border) {
+    // b runs with the outside on its left; the surface-side order is reversed
+    const auto s0 = uv_of(uv, source(b, tm)), s1 = uv_of(uv, target(b, tm)),
+               s2 = uv_of(uv, target(next(b, tm), tm));
+    length_error += std::abs(std::hypot(s1[0] - s0[0], s1[1] - s0[1]) -
+                             distance3(point_of<TriangleMesh>(source(b, tm), vpm),
+                                       point_of<TriangleMesh>(target(b, tm), vpm)));
+    // inner angle at target(b) on the surface side, walking s2 -> s1 -> s0
+    const double ux = s2[0] - s1[0], uy = s2[1] - s1[1], wx = s0[0] - s1[0], wy = s0[1] - s1[1];
+    double theta = std::atan2(wx * uy - wy * ux, wx * ux + wy * uy);
+    if(theta <= 0) theta += 2 * pi;
+    theta_error += std::abs(angle_sum_3d[get(vim, target(b, tm))] - theta);
+  }
+  if(!border.empty()) {
+    rep.boundary_length_error = length_error / border.size();
+    rep.boundary_angle_error = theta_error / border.size();
+  }
+
+  // border crossings: boxes of the border segments, exact segment tests
+  if(opt.border_crossings && border.size() > 1) {
+    typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t> Box;
+    std::vector<Box> boxes;
+    boxes.reserve(border.size());
+    std::vector<EK::Segment_2> seg;
+    seg.reserve(border.size());
+    for(std::size_t k = 0; k < border.size(); ++k) {
+      const auto a = uv_of(uv, source(border[k], tm)), b = uv_of(uv, target(border[k], tm));
+      seg.emplace_back(EK::Point_2(a[0], a[1]), EK::Point_2(b[0], b[1]));
+      boxes.emplace_back(seg.back().bbox(), k);
+    }
+    auto report = [&](const Box& x, const Box& y) {
+      const std::size_t i = x.info(), j = y.info();
+      const halfedge_descriptor hi = border[i], hj = border[j];
+      const vertex_descriptor si = source(hi, tm), ti = target(hi, tm), sj = source(hj, tm), tj = target(hj, tm);
+      bool crossing = false;
+      if(si == sj || si == tj || ti == sj || ti == tj) {
+        // consecutive edges: they only cross by folding back onto each other
+        const vertex_descriptor shared = (si == sj || si == tj) ? si : ti;
+        const EK::Point_2& c = (shared == si) ? seg[i].source() : seg[i].target();
+        const EK::Point_2& p = (shared == si) ? seg[i].target() : seg[i].source();
+        const EK::Point_2& q = (shared == sj) ? seg[j].target() : seg[j].source();
+        crossing = CGAL::collinear(c, p, q) && !CGAL::collinear_are_ordered_along_line(p, c, q);
+      } else {
+        crossing = CGAL::do_intersect(seg[i], seg[j]);
+      }
+      if(crossing) rep.border_crossings.emplace_back(hi, hj);
+    };
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report);
+  }
+  rep.overlap = rep.flipped_faces > 0 || rep.branch_vertices > 0 || !rep.border_crossings.empty();
+  return rep;
+}
+
+} // namespace internal
+
+/// \ingroup PkgCGAL_QDRef
+/// computes every distortion measure of the UV map `uv` on `tm` in one pass
+/// over the faces, plus an exact test of the border polygons for crossings
+/// (`CGAL::box_self_intersection_d` and exact predicates; the paper rasterises
+/// on a GPU instead).
+///
+/// A locally injective, orientation-preserving map whose border polygons are
+/// simple and disjoint is globally one-to-one; so `overlap` (S(Omega)) is set
+/// when a face is flipped, an interior vertex is a branch point (its 1-ring
+/// wraps around it twice without any flipped face) or two border edges cross.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` from vertices to a 2D point type
+/// \param np optional: `vertex_point_map`, `vertex_index_map`
+/// \returns a report whose `status` is `OK`, `EMPTY_MESH`, `NOT_TRIANGLE_MESH` or
+///          `INVALID_COORDINATES` (a NaN or infinite 3D or UV coordinate).
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Distortion_report<TriangleMesh> compute_distortion(const TriangleMesh& tm, const VertexUVMap& uv,
+                                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  return internal::compute_distortion_impl(tm, uv, vpm, vim, internal::Distortion_options());
+}
+
+namespace internal {
+template <class TriangleMesh, class VertexUVMap, class NamedParameters>
+Distortion_report<TriangleMesh> face_measures(const TriangleMesh& tm, const VertexUVMap& uv,
+                                              const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  Distortion_options opt;
+  opt.border_crossings = false;
+  return compute_distortion_impl(tm, uv, vpm, vim, opt);
+}
+} // namespace internal
+
+// The single measures below return, on invalid input (no face, a face that is
+// not a triangle, a non-finite coordinate), the value that judges the map worst:
+// infinite distortion, every face flipped, an overlap. `compute_distortion()`
+// tells why.
+
+/// \ingroup PkgCGAL_QDRef
+/// returns A(Omega) in percent (see `Distortion_report::area_distortion`);
+/// +infinity on invalid input.
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double area_distortion(const TriangleMesh& tm, const VertexUVMap& uv,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto r = internal::face_measures(tm, uv, np);
+  return r ? r.area_distortion : std::numeric_limits<double>::infinity();
+}
+
+/// \ingroup PkgCGAL_QDRef
+/// returns Sander's L2 stretch (see `Distortion_report::l2_stretch`); +infinity on invalid input.
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double l2_stretch(const TriangleMesh& tm, const VertexUVMap& uv,
+                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto r = internal::face_measures(tm, uv, np);
+  return r ? r.l2_stretch : std::numeric_limits<double>::infinity();
+}
+
+/// \ingroup PkgCGAL_QDRef
+/// returns the number of faces whose 2D orientation is not positive; the number
+/// of faces on invalid input.
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t number_of_flipped_faces(const TriangleMesh& tm, const VertexUVMap& uv,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto r = internal::face_measures(tm, uv, np);
+  return r ? r.flipped_faces : static_cast<std::size_t>(num_faces(tm));
+}
+
+/// \ingroup PkgCGAL_QDRef
+/// returns S(Omega): whether the map fails to be one-to-one (see
+/// `compute_distortion()`); `true` on invalid input.
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool has_global_overlap(const TriangleMesh& tm, const VertexUVMap& uv,
+                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto r = compute_distortion(tm, uv, np);
+  return !r || r.overlap;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_DISTORTION_H

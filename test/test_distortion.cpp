@@ -1,0 +1,211 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#define BOOST_TEST_MODULE distortion
+#include <boost/test/unit_test.hpp>
+#include <boost/mpl/list.hpp>
+
+#include "mesh_generators.h"
+#include "test_utils.h"
+
+#include <CGAL_QD/distortion.h>
+
+#include <cmath>
+#include <functional>
+
+namespace QD = CGAL_QD;
+using namespace qd_test;
+
+typedef boost::mpl::list<Surface_mesh, Polyhedron, Cartesian_surface_mesh> Mesh_types;
+
+namespace {
+
+// UVs from a function of the 3D point
+template <class Mesh>
+Uv_store<Mesh> map_uv(const Mesh& tm, const std::function<std::array<double, 2>(const P3&)>& f)
+{
+  Uv_store<Mesh> uv;
+  for(auto v : vertices(tm)) {
+    const auto q = f(p3(tm, v));
+    uv.map[v] = typename Uv_store<Mesh>::Point_2(q[0], q[1]);
+  }
+  return uv;
+}
+
+// a flat grid in the plane z = 0 over [0,2] x [0,1]
+Soup flat_grid() { return grid(10, 6, [](double u, double v) { return P3{2 * u, v, 0}; }); }
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(identity_map, Mesh, Mesh_types)
+{
+  const Mesh tm = make<Mesh>(flat_grid());
+  const auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; });
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_faces == num_faces(tm));
+  BOOST_TEST(std::abs(r.area_3d - 2.0) < 1e-12);
+  BOOST_TEST(r.area_distortion < 1e-12);
+  BOOST_TEST(std::abs(r.l2_stretch - 1) < 1e-12);
+  BOOST_TEST(std::abs(r.l2_stretch_normalized - 1) < 1e-12);
+  BOOST_TEST(std::abs(r.linf_stretch - 1) < 1e-12);
+  BOOST_TEST(r.angle_distortion < 1e-12);
+  BOOST_TEST(r.boundary_length_error < 1e-14);
+  BOOST_TEST(r.boundary_angle_error < 1e-12);
+  BOOST_TEST(r.flipped_faces == 0u);
+  BOOST_TEST(r.branch_vertices == 0u);
+  BOOST_TEST(r.border_crossings.empty());
+  BOOST_TEST(!r.overlap);
+  BOOST_TEST(!QD::has_global_overlap(tm, uv.pmap_const()));
+}
+
+BOOST_AUTO_TEST_CASE(uniform_scale_and_shear)
+{
+  const Surface_mesh tm = make<Surface_mesh>(flat_grid());
+  for(double s : {0.5, 3.0}) {
+    const auto uv = map_uv(tm, [s](const P3& p) { return std::array<double, 2>{s * p[0] + 1, s * p[1] - 2}; });
+    const auto r = QD::compute_distortion(tm, uv.pmap_const());
+    BOOST_TEST(std::abs(r.area_distortion - std::abs(s * s - 1) * 100) < 1e-9);
+    BOOST_TEST(std::abs(r.l2_stretch - 1 / s) < 1e-12);  // the 2D -> 3D map shrinks by 1/s
+    BOOST_TEST(std::abs(r.l2_stretch_normalized - 1) < 1e-12);
+    BOOST_TEST(r.angle_distortion < 1e-12);
+    // border edges: lengths l/10 and l/6 scaled by s; Pi_L = |s - 1| * mean length
+    const double mean_length = (2 * 10 * 0.2 + 2 * 6 * (1. / 6)) / 32;
+    BOOST_TEST(std::abs(r.boundary_length_error - std::abs(s - 1) * mean_length) < 1e-12);
+    BOOST_TEST(r.boundary_angle_error < 1e-12);
+    BOOST_TEST(std::abs(QD::area_distortion(tm, uv.pmap_const()) - r.area_distortion) < 1e-15);
+    BOOST_TEST(std::abs(QD::l2_stretch(tm, uv.pmap_const()) - r.l2_stretch) < 1e-15);
+  }
+  // shear (x + k y, y): areas kept; the 2D -> 3D Jacobian [[1, -k], [0, 1]] gives
+  // L2 = sqrt((2 + k^2) / 2) and Linf = its largest singular value
+  const double k = 0.75;
+  const auto uv = map_uv(tm, [k](const P3& p) { return std::array<double, 2>{p[0] + k * p[1], p[1]}; });
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(r.area_distortion < 1e-12);
+  BOOST_TEST(std::abs(r.l2_stretch - std::sqrt((2 + k * k) / 2)) < 1e-12);
+  const double big = std::sqrt((2 + k * k + std::sqrt((2 + k * k) * (2 + k * k) - 4)) / 2);
+  BOOST_TEST(std::abs(r.linf_stretch - big) < 1e-12);
+  BOOST_TEST(r.angle_distortion > 0.05);
+  BOOST_TEST(!r.overlap);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(mirrored_layout_flips_every_face, Mesh, Mesh_types)
+{
+  const Mesh tm = make<Mesh>(flat_grid());
+  const auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], -p[1]}; });
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(r.flipped_faces == num_faces(tm));
+  BOOST_TEST(QD::number_of_flipped_faces(tm, uv.pmap_const()) == num_faces(tm));
+  BOOST_TEST(r.overlap);
+  BOOST_TEST(r.area_distortion < 1e-12);  // unsigned areas
+}
+
+BOOST_AUTO_TEST_CASE(one_flipped_face_is_counted)
+{
+  const Surface_mesh tm = make<Surface_mesh>(flat_grid());
+  auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; });
+  // move the interior vertex (3,3) across its neighbours: its faces fold over
+  auto v = *std::next(vertices(tm).begin(), 3 * 11 + 3);
+  uv.map[v] = Uv_store<Surface_mesh>::Point_2(0.6 + 0.5, 0.5);
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(r.flipped_faces > 0u);
+  BOOST_TEST(r.flipped_faces < 6u);
+  BOOST_TEST(r.overlap);
+  BOOST_TEST(r.border_crossings.empty());
+}
+
+BOOST_AUTO_TEST_CASE(overlap_without_flip_is_detected)
+{
+  // a strip wound 1.25 times around a circle: every face keeps its orientation,
+  // but the strip lies over itself
+  const Surface_mesh tm = make<Surface_mesh>(grid(60, 2, [](double u, double v) { return P3{u, 0.1 * v, 0}; }));
+  const auto uv = map_uv(tm, [](const P3& p) {
+    const double a = 2.5 * pi * p[0], r = 1.0 - p[1];  // v grows inwards: orientation kept
+    return std::array<double, 2>{r * std::cos(a), r * std::sin(a)};
+  });
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(r.flipped_faces == 0u);
+  BOOST_TEST(!r.border_crossings.empty());
+  BOOST_TEST(r.overlap);
+  // every reported pair really crosses
+  for(const auto& pr : r.border_crossings) BOOST_TEST((pr.first != pr.second));
+}
+
+BOOST_AUTO_TEST_CASE(branch_vertex_is_detected)
+{
+  // a fan of 8 triangles whose 2D layout wraps twice around the centre
+  Soup s;
+  s.points.push_back({0, 0, 0});
+  for(int k = 0; k < 8; ++k) s.points.push_back({std::cos(2 * pi * k / 8), std::sin(2 * pi * k / 8), 0});
+  for(std::size_t k = 0; k < 8; ++k) s.triangles.push_back({0, 1 + k, 1 + (k + 1) % 8});
+  const Surface_mesh tm = make<Surface_mesh>(s);
+  Uv_store<Surface_mesh> uv;
+  std::size_t k = 0;
+  for(auto v : vertices(tm)) {
+    if(k == 0) uv.map[v] = Uv_store<Surface_mesh>::Point_2(0, 0);
+    else uv.map[v] = Uv_store<Surface_mesh>::Point_2(std::cos(4 * pi * (k - 1) / 8 + 0.1), std::sin(4 * pi * (k - 1) / 8 + 0.1));
+    ++k;
+  }
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(r.flipped_faces == 0u);
+  BOOST_TEST(r.branch_vertices == 1u);
+  BOOST_TEST(r.overlap);
+}
+
+BOOST_AUTO_TEST_CASE(curved_surface_measures)
+{
+  // a cylinder patch mapped by its exact development: no distortion at all
+  const double R = 1.3, A = 1.4 * pi;
+  const Surface_mesh tm = make<Surface_mesh>(grid(30, 8, cylinder(R, A, 2.0)));
+  const auto uv = map_uv(tm, [R](const P3& p) { return std::array<double, 2>{R * std::atan2(p[1], p[0]), p[2]}; });
+  // atan2 jumps at pi: the patch spans [0, 1.4 pi], so unwrap
+  Uv_store<Surface_mesh> fixed;
+  for(auto& kv : uv.map) {
+    double x = CGAL::to_double(kv.second.x());
+    if(x < -1e-12) x += 2 * pi * R;
+    fixed.map[kv.first] = Uv_store<Surface_mesh>::Point_2(x, kv.second.y());
+  }
+  const auto r = QD::compute_distortion(tm, fixed.pmap_const());
+  BOOST_TEST(r.area_distortion < 1.0);  // chords vs arcs: the development is of the polyhedron
+  BOOST_TEST(!r.overlap);
+  // the measures of the polyhedral development (from unrolled rulings) are exact:
+  // rebuild the UVs from chord lengths
+  Uv_store<Surface_mesh> exact;
+  const double chord = 2 * R * std::sin(A / 30 / 2);
+  std::size_t idx = 0;
+  for(auto v : vertices(tm)) {
+    exact.map[v] = Uv_store<Surface_mesh>::Point_2(chord * double(idx % 31), 2.0 * double(idx / 31) / 8);
+    ++idx;
+  }
+  const auto e = QD::compute_distortion(tm, exact.pmap_const());
+  BOOST_TEST(e.area_distortion < 1e-10);
+  BOOST_TEST(std::abs(e.l2_stretch - 1) < 1e-10);
+  BOOST_TEST(e.boundary_length_error < 1e-12);
+  BOOST_TEST(e.boundary_angle_error < 1e-10);
+  BOOST_TEST(e.angle_distortion < 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(invalid_input)
+{
+  const Surface_mesh empty;
+  Uv_store<Surface_mesh> none;
+  BOOST_TEST((QD::compute_distortion(empty, none.pmap_const()).status == QD::Error_code::EMPTY_MESH));
+  BOOST_TEST(std::isinf(QD::area_distortion(empty, none.pmap_const())));
+  BOOST_TEST(QD::has_global_overlap(empty, none.pmap_const()));
+
+  const Surface_mesh tm = make<Surface_mesh>(flat_grid());
+  auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; });
+  uv.map[*vertices(tm).begin()] = Uv_store<Surface_mesh>::Point_2(std::nan(""), 0);
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST((r.status == QD::Error_code::INVALID_COORDINATES));
+  BOOST_TEST(std::isinf(QD::l2_stretch(tm, uv.pmap_const())));
+  BOOST_TEST(QD::number_of_flipped_faces(tm, uv.pmap_const()) == num_faces(tm));
+
+  // a degenerate UV triangle: infinite stretch, never NaN
+  auto flat = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], 0.0 * p[1]}; });
+  const auto d = QD::compute_distortion(tm, flat.pmap_const());
+  BOOST_REQUIRE(d);
+  BOOST_TEST(std::isinf(d.l2_stretch));
+  BOOST_TEST(!std::isnan(d.area_distortion));
+  BOOST_TEST(d.overlap);
+}

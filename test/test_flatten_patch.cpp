@@ -1,0 +1,209 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#define BOOST_TEST_MODULE flatten_patch
+#include <boost/test/unit_test.hpp>
+#include <boost/mpl/list.hpp>
+
+#include "mesh_generators.h"
+#include "test_utils.h"
+
+#include <CGAL_QD/LPFB_border_parameterizer_3.h>
+#include <CGAL_QD/distortion.h>
+#include <CGAL_QD/flatten_patch.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <cmath>
+
+namespace QD = CGAL_QD;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using namespace qd_test;
+
+typedef boost::mpl::list<Surface_mesh, Polyhedron, Cartesian_surface_mesh> Mesh_types;
+
+namespace {
+
+template <class Mesh>
+struct Flattened
+{
+  QD::Flattening_result result;
+  QD::Distortion_report<Mesh> report;
+  Uv_store<Mesh> uv;
+};
+
+template <class Mesh, class NP = CGAL::parameters::Default_named_parameters>
+Flattened<Mesh> flatten(const Mesh& tm, const NP& np = CGAL::parameters::default_values())
+{
+  Flattened<Mesh> f;
+  f.result = QD::flatten_patch(tm, f.uv.pmap(), np);
+  BOOST_REQUIRE_MESSAGE(f.result, QD::error_message(f.result.status));
+  BOOST_REQUIRE(f.uv.map.size() == f.result.number_of_vertices);
+  f.report = QD::compute_distortion(tm, f.uv.pmap_const());
+  BOOST_REQUIRE(f.report);
+  return f;
+}
+
+// z = 0.3 sin(x): rulings along y, the grid's cells are planar rectangles
+Soup sine_sheet() { return grid(30, 10, [](double u, double v) { return P3{4 * u, 2 * v, 0.3 * std::sin(4 * u)}; }); }
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(developable_patches_flatten_exactly, Mesh, Mesh_types)
+{
+  const std::vector<Soup> soups = {grid(24, 8, cylinder(1.0, 1.5 * pi, 2.0)), grid(24, 8, cone(0.5, 1.5, 1.6 * pi, 1.0)),
+                                   grid(12, 12, [](double u, double v) { return P3{u + 0.2 * v * v, v, 0}; }),
+                                   sine_sheet()};
+  for(const Soup& s : soups) {
+    const Mesh tm = make<Mesh>(s);
+    const auto f = flatten(tm);
+    BOOST_TEST(f.result.border.iterations <= 1u);
+    BOOST_TEST(f.report.area_distortion < 1e-6);
+    BOOST_TEST(std::abs(f.report.l2_stretch - 1) < 1e-6);
+    BOOST_TEST(f.report.boundary_length_error < 1e-12);
+    BOOST_TEST(f.report.flipped_faces == 0u);
+    BOOST_TEST(!f.report.overlap);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(hemisphere_area_distortion_is_half)
+{
+  // the equator (length 2 pi) becomes a circle of radius 1: area pi against 2 pi
+  double previous = 100;
+  for(std::size_t n : {24, 48, 96}) {
+    const Surface_mesh tm = make<Surface_mesh>(polar(n / 2, n, sphere_cap(0.5 * pi)));
+    const auto f = flatten(tm);
+    BOOST_TEST_MESSAGE("hemisphere " << num_faces(tm) << " faces: A = " << f.report.area_distortion << " %");
+    BOOST_TEST(std::abs(f.report.area_distortion - 50) < 3);
+    BOOST_TEST(std::abs(f.report.area_distortion - 50) <= previous + 1e-9);  // converges with refinement
+    previous = std::abs(f.report.area_distortion - 50);
+    BOOST_TEST(!f.report.overlap);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(cube_versus_noisy_cylinder)
+{
+  // the paper's Fig. 1: LPFB+IP amplifies the distortion of a non-developable
+  // patch and keeps a quasi-developable one almost isometric
+  const Surface_mesh cube = make<Surface_mesh>(cube_opened_by_five_cuts(12));
+  const auto fc = flatten(cube);
+  BOOST_TEST_MESSAGE("cube: A = " << fc.report.area_distortion << " %, L2 = " << fc.report.l2_stretch
+                                  << ", flips " << fc.report.flipped_faces << ", iterations "
+                                  << fc.result.border.iterations);
+  BOOST_TEST(fc.result.border.number_of_loops == 1u);
+  BOOST_TEST(fc.report.area_distortion > 30);
+  BOOST_TEST(fc.report.l2_stretch > 1.5);  // 1.509 for this cut, at every resolution from 192 to 6,912 faces
+
+  Soup noisy = grid(40, 20, cylinder(1.0, 1.5 * pi, 2.0));
+  for(std::size_t k : {5 * 41 + 7, 9 * 41 + 20, 14 * 41 + 31, 11 * 41 + 12, 6 * 41 + 28}) {
+    P3& p = noisy.points[k];  // small radial spikes at interior vertices
+    const double r = std::hypot(p[0], p[1]);
+    p[0] *= (r + 0.05) / r;
+    p[1] *= (r + 0.05) / r;
+  }
+  const Surface_mesh cyl = make<Surface_mesh>(noisy);
+  const auto fn = flatten(cyl);
+  BOOST_TEST_MESSAGE("noisy cylinder: A = " << fn.report.area_distortion << " %, L2 = " << fn.report.l2_stretch);
+  BOOST_TEST(fn.report.area_distortion < 2);
+  BOOST_TEST(fn.report.l2_stretch < 1.05);
+  BOOST_TEST(!fn.report.overlap);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(patch_with_two_holes, Mesh, Mesh_types)
+{
+  const Mesh tm = make<Mesh>(grid(24, 24, bump(0.3), holes({{4, 8, 5, 9}, {14, 19, 12, 16}})));
+  const auto f = flatten(tm);
+  BOOST_TEST(f.result.border.number_of_loops == 3u);
+  BOOST_TEST(f.result.border.coincidence_error < 1e-10);  // every hole closes up
+  BOOST_TEST(f.report.boundary_length_error < 1e-10);     // on every loop
+  BOOST_TEST(std::isfinite(f.report.area_distortion));
+  BOOST_TEST(std::isfinite(f.report.l2_stretch));
+  BOOST_TEST(!f.report.overlap);
+  BOOST_TEST(f.result.number_of_interior_vertices + f.result.number_of_border_vertices ==
+             f.result.number_of_vertices);
+}
+
+BOOST_AUTO_TEST_CASE(same_uvs_as_cgal_parameterize_with_the_lpfb_border)
+{
+  Surface_mesh tm = make<Surface_mesh>(grid(20, 20, bump(0.35)));
+  const auto f = flatten(tm);
+  Uv_store<Surface_mesh> cgal;
+  SMP::Discrete_conformal_map_parameterizer_3<Surface_mesh, QD::LPFB_border_parameterizer_3<Surface_mesh>> p;
+  BOOST_REQUIRE(SMP::parameterize(tm, p, CGAL::Polygon_mesh_processing::longest_border(tm).first, cgal.pmap()) ==
+                SMP::OK);
+  double worst = 0;
+  for(auto v : vertices(tm))
+    worst = (std::max)(worst, std::hypot(f.uv.at(v)[0] - cgal.at(v)[0], f.uv.at(v)[1] - cgal.at(v)[1]));
+  BOOST_TEST(worst < 1e-6);  // CGAL solves iteratively (BiCGSTAB)
+}
+
+BOOST_AUTO_TEST_CASE(stage_times_and_sizes)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(30, 30, bump(0.3)));
+  const auto f = flatten(tm);
+  BOOST_TEST(f.result.number_of_faces == num_faces(tm));
+  BOOST_TEST(f.result.number_of_border_vertices == 120u);
+  BOOST_TEST(f.result.number_of_interior_vertices == 29u * 29u);
+  // lower triangle: diagonal plus one entry per interior edge
+  BOOST_TEST(f.result.number_of_nonzeros > f.result.number_of_interior_vertices);
+  BOOST_TEST(f.result.time_border_ms >= 0);
+  BOOST_TEST(f.result.time_total_ms >= f.result.time_border_ms);
+  BOOST_TEST(f.result.time_total_ms >= f.result.time_factorization_ms + f.result.time_solve_ms);
+  BOOST_TEST(!f.result.used_fallback);
+  BOOST_TEST(!f.result.solver.empty());
+}
+
+namespace {
+// a solver that always fails to factorise
+struct Failing_solver
+{
+  bool factorize(const Eigen::SparseMatrix<double>&) { return false; }
+  bool solve(const Eigen::MatrixXd&, Eigen::MatrixXd&) { return false; }
+  const char* name() const { return "failing"; }
+};
+} // namespace
+
+BOOST_AUTO_TEST_CASE(solver_choice_and_fallback)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(16, 16, bump(0.3), holes({{5, 9, 5, 9}})));
+  const auto reference = flatten(tm);
+  const auto ldlt = flatten(tm, QD::parameters::sparse_solver(QD::Simplicial_LDLT_solver()));
+  BOOST_TEST(ldlt.result.solver == "SimplicialLDLT");
+  const auto fallback = flatten(tm, QD::parameters::sparse_solver(Failing_solver()));
+  BOOST_TEST(fallback.result.used_fallback);
+  BOOST_TEST(fallback.result.solver == "SparseLU");
+  for(auto v : vertices(tm)) {
+    BOOST_TEST(std::hypot(ldlt.uv.at(v)[0] - reference.uv.at(v)[0], ldlt.uv.at(v)[1] - reference.uv.at(v)[1]) < 1e-9);
+    BOOST_TEST(std::hypot(fallback.uv.at(v)[0] - reference.uv.at(v)[0], fallback.uv.at(v)[1] - reference.uv.at(v)[1]) <
+               1e-9);
+  }
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(bad_input_writes_nothing, Mesh, Mesh_types)
+{
+  {
+    Soup s;  // a closed octahedron
+    s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    s.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const Mesh tm = make<Mesh>(s);
+    Uv_store<Mesh> uv;
+    const auto r = QD::flatten_patch(tm, uv.pmap());
+    BOOST_TEST((r.status == QD::Error_code::NO_BORDER));
+    BOOST_TEST(uv.map.empty());
+  }
+  {
+    Mesh empty;
+    Uv_store<Mesh> uv;
+    BOOST_TEST((QD::flatten_patch(empty, uv.pmap()).status == QD::Error_code::EMPTY_MESH));
+  }
+  {
+    Soup s = grid(4, 4, bump(0.2));
+    s.points[7][2] = std::numeric_limits<double>::quiet_NaN();
+    const Mesh tm = make<Mesh>(s);
+    Uv_store<Mesh> uv;
+    BOOST_TEST((QD::flatten_patch(tm, uv.pmap()).status == QD::Error_code::INVALID_COORDINATES));
+    BOOST_TEST(uv.map.empty());
+  }
+}
