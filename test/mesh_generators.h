@@ -13,6 +13,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <array>
@@ -283,6 +285,42 @@ inline Soup cube_opened_by_five_cuts(std::size_t n)
         if(on_segment(closed.points[a], e) && on_segment(closed.points[b], e)) cut.insert({a, b});
     }
   return cut_open(closed, cut);
+}
+
+// A patch grown on a real mesh as a segmentation would leave it: a ball of
+// faces around a seed, whose border is then cleaned of one-face notches (an
+// outside face sharing two edges with the patch joins it) and ears (a patch
+// face with two border edges leaves it).
+inline bool grow_disk_patch(const Surface_mesh& sm, Surface_mesh::Face_index seed, std::size_t max_faces, Surface_mesh& out)
+{
+  std::vector<Surface_mesh::Face_index> order{seed};
+  std::set<Surface_mesh::Face_index> in{seed};
+  for(std::size_t q = 0; q < order.size() && order.size() < max_faces; ++q)
+    for(auto h : CGAL::halfedges_around_face(halfedge(order[q], sm), sm)) {
+      auto o = opposite(h, sm);
+      if(is_border(o, sm)) continue;
+      if(in.insert(face(o, sm)).second) order.push_back(face(o, sm));
+    }
+  auto inside_neighbours = [&](Surface_mesh::Face_index f) {
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, sm), sm))
+      if(!is_border(opposite(h, sm), sm) && in.count(face(opposite(h, sm), sm))) ++k;
+    return k;
+  };
+  for(int round = 0; round < 10; ++round) {
+    bool changed = false;
+    for(auto f : faces(sm))
+      if(!in.count(f) && inside_neighbours(f) >= 2) { in.insert(f); changed = true; }
+    std::vector<Surface_mesh::Face_index> ears;
+    for(auto f : in)
+      if(inside_neighbours(f) <= 1) ears.push_back(f);
+    for(auto f : ears) { in.erase(f); changed = true; }
+    if(!changed) break;
+  }
+  std::vector<Surface_mesh::Face_index> patch(in.begin(), in.end());
+  CGAL::Face_filtered_graph<Surface_mesh> fg(sm, patch);
+  CGAL::copy_face_graph(fg, out);
+  return true;
 }
 
 // applies p -> s R p + t with a random rotation R

@@ -171,6 +171,13 @@ BOOST_AUTO_TEST_CASE(solver_choice_and_fallback)
   const auto reference = flatten(tm);
   const auto ldlt = flatten(tm, QD::parameters::sparse_solver(QD::Simplicial_LDLT_solver()));
   BOOST_TEST(ldlt.result.solver == "SimplicialLDLT");
+#ifdef CGAL_QD_USE_CHOLMOD
+  const auto cholmod = flatten(tm, QD::parameters::sparse_solver(QD::Cholmod_solver()));
+  BOOST_TEST(cholmod.result.solver == "CHOLMOD");
+  for(auto v : vertices(tm))
+    BOOST_TEST(std::hypot(cholmod.uv.at(v)[0] - reference.uv.at(v)[0], cholmod.uv.at(v)[1] - reference.uv.at(v)[1]) <
+               1e-9);
+#endif
   const auto fallback = flatten(tm, QD::parameters::sparse_solver(Failing_solver()));
   BOOST_TEST(fallback.result.used_fallback);
   BOOST_TEST(fallback.result.solver == "SparseLU");

@@ -16,8 +16,6 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
-#include <CGAL/boost/graph/Face_filtered_graph.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <boost/concept/assert.hpp>
 #include <CGAL/boost/graph/Graph_with_descriptor_with_graph.h>
@@ -662,42 +660,6 @@ BOOST_AUTO_TEST_CASE(caller_vertex_index_map)
 }
 
 #ifdef CGAL_QD_DEMO_MESH_DIR
-// A patch grown on a real mesh as a segmentation would leave it: a ball of
-// faces around a seed, whose border is then cleaned of one-face notches (an
-// outside face sharing two edges with the patch joins it) and ears (a patch
-// face with two border edges leaves it).
-bool grow_disk_patch(const Surface_mesh& sm, Surface_mesh::Face_index seed, std::size_t max_faces, Surface_mesh& out)
-{
-  std::vector<Surface_mesh::Face_index> order{seed};
-  std::set<Surface_mesh::Face_index> in{seed};
-  for(std::size_t q = 0; q < order.size() && order.size() < max_faces; ++q)
-    for(auto h : CGAL::halfedges_around_face(halfedge(order[q], sm), sm)) {
-      auto o = opposite(h, sm);
-      if(is_border(o, sm)) continue;
-      if(in.insert(face(o, sm)).second) order.push_back(face(o, sm));
-    }
-  auto inside_neighbours = [&](Surface_mesh::Face_index f) {
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(f, sm), sm))
-      if(!is_border(opposite(h, sm), sm) && in.count(face(opposite(h, sm), sm))) ++k;
-    return k;
-  };
-  for(int round = 0; round < 10; ++round) {
-    bool changed = false;
-    for(auto f : faces(sm))
-      if(!in.count(f) && inside_neighbours(f) >= 2) { in.insert(f); changed = true; }
-    std::vector<Surface_mesh::Face_index> ears;
-    for(auto f : in)
-      if(inside_neighbours(f) <= 1) ears.push_back(f);
-    for(auto f : ears) { in.erase(f); changed = true; }
-    if(!changed) break;
-  }
-  std::vector<Surface_mesh::Face_index> patch(in.begin(), in.end());
-  CGAL::Face_filtered_graph<Surface_mesh> fg(sm, patch);
-  CGAL::copy_face_graph(fg, out);
-  return true;
-}
-
 BOOST_AUTO_TEST_CASE(real_mesh_patch_through_parameterize)
 {
   std::size_t parameterized = 0;

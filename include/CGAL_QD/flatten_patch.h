@@ -87,17 +87,19 @@ struct Simplicial_LDLT_solver
 
 #ifdef CGAL_QD_USE_CHOLMOD
 /// \ingroup PkgCGAL_QDRef
-/// SuiteSparse's CHOLMOD (supernodal when it pays off), available when CMake
-/// found it (`CGAL_QD_USE_CHOLMOD` is then defined).
+/// SuiteSparse's CHOLMOD (it chooses simplicial or supernodal), available when
+/// CMake found it (`CGAL_QD_USE_CHOLMOD` is then defined).
 struct Cholmod_solver
     : Eigen_symmetric_solver<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower>>
 {
   Cholmod_solver() : Eigen_symmetric_solver("CHOLMOD") {}
 };
-typedef Cholmod_solver Default_flattening_solver;
-#else
-typedef Simplicial_LDLT_solver Default_flattening_solver;
 #endif
+
+/// \ingroup PkgCGAL_QDRef
+/// the default solver of `flatten_patch()`: `Simplicial_LDLT_solver` (see
+/// `doc/performance.md` for the comparison with CHOLMOD).
+typedef Simplicial_LDLT_solver Default_flattening_solver;
 
 /// \ingroup PkgCGAL_QDRef
 /// diagnostics of `flatten_patch()`.
@@ -197,8 +199,8 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point t)
 ///        `CGAL_QD::parameters::sparse_solver`: a solver object with `bool
 ///        factorize(const Eigen::SparseMatrix<double>& lower)`, `bool solve(const
 ///        Eigen::MatrixXd& B, Eigen::MatrixXd& X)` and `const char* name()`
-///        (default: `Default_flattening_solver`, CHOLMOD when found at configure
-///        time, else `Simplicial_LDLT_solver`).
+///        (default: `Default_flattening_solver`, that is `Simplicial_LDLT_solver`;
+///        `Cholmod_solver` when CMake found SuiteSparse).
 /// \returns a `Flattening_result`; on a status other than `OK` nothing is written.
 /// The statuses are those of `compute_length_preserved_free_boundary()`, and
 /// `SOLVER_FAILED` when no solver could solve the interior system.
