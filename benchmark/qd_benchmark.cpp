@@ -174,21 +174,6 @@ std::vector<Method> all_methods()
   return ms;
 }
 
-void normalise(const Mesh& mesh, UV_map uv)
-{
-  Mesh::Halfedge_index longest;
-  double best = -1;
-  for(Mesh::Halfedge_index h : halfedges(mesh))
-    if(is_border(h, mesh)) {
-      const double l = std::sqrt(CGAL::squared_distance(mesh.point(source(h, mesh)), mesh.point(target(h, mesh))));
-      if(l > best) { best = l; longest = h; }
-    }
-  const Epick::Point_2 a = uv[source(longest, mesh)], b = uv[target(longest, mesh)];
-  const double l2 = std::sqrt(CGAL::squared_distance(a, b));
-  if(!(l2 > 0)) return;
-  for(Mesh::Vertex_index v : vertices(mesh))
-    uv[v] = Epick::Point_2(a.x() + best / l2 * (uv[v].x() - a.x()), a.y() + best / l2 * (uv[v].y() - a.y()));
-}
 
 // --------------------------------------------------------------- measuring
 
@@ -232,7 +217,7 @@ Row measure(const Mesh_case& mc, const Method& m, double budget_s, bool distorti
   if(times.empty()) return r;
   r.median_ms = median(times);
   if(distortion && m.name != "LPFB alone") {
-    if(m.normalise) normalise(mesh, uv);
+    if(m.normalise) CGAL_QD::normalize_by_longest_border_edge(mesh, uv);
     const auto d = QD::compute_distortion(mesh, uv);
     r.measured = true;
     r.l2 = d.l2_stretch;

@@ -47,23 +47,6 @@ int usage()
   return EXIT_FAILURE;
 }
 
-// the similarity that puts the longest border edge at its 3D length
-void normalise(const Mesh& mesh, UV_map uv)
-{
-  Mesh::Halfedge_index longest;
-  double best = -1;
-  for(Mesh::Halfedge_index h : halfedges(mesh))
-    if(is_border(h, mesh)) {
-      const double l = std::sqrt(CGAL::squared_distance(mesh.point(source(h, mesh)), mesh.point(target(h, mesh))));
-      if(l > best) { best = l; longest = h; }
-    }
-  const K::Point_2 a = uv[source(longest, mesh)], b = uv[target(longest, mesh)];
-  const double l2 = std::sqrt(CGAL::squared_distance(a, b));
-  if(!(l2 > 0)) return;
-  const double s = best / l2;
-  for(Mesh::Vertex_index v : vertices(mesh))
-    uv[v] = K::Point_2(a.x() + s * (uv[v].x() - a.x()), a.y() + s * (uv[v].y() - a.y()));
-}
 
 template <class Parameterizer>
 SMP::Error_code run_cgal(Mesh& mesh, Parameterizer p, UV_map uv)
@@ -147,7 +130,7 @@ int main(int argc, char** argv)
       else err = run_cgal(mesh, SMP::ARAP_parameterizer_3<Mesh>(), uv);
       time_total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
       if(err != SMP::OK) status = SMP::get_error_message(err);
-      else normalise(mesh, uv);
+      else CGAL_QD::normalize_by_longest_border_edge(mesh, uv);
     }
   }
   if(status != "success") {

@@ -209,3 +209,26 @@ BOOST_AUTO_TEST_CASE(invalid_input)
   BOOST_TEST(!std::isnan(d.area_distortion));
   BOOST_TEST(d.overlap);
 }
+
+BOOST_AUTO_TEST_CASE(paper_normalisation_of_a_scaled_map)
+{
+  // a map scaled by 3 and shifted: the similarity brings the longest border edge
+  // back to its 3D length, and with it every length of this uniform map
+  const Surface_mesh tm = make<Surface_mesh>(flat_grid());
+  auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{3 * p[0] + 5, 3 * p[1] - 1}; });
+  BOOST_TEST(QD::compute_distortion(tm, uv.pmap_const()).area_distortion > 100);
+  QD::normalize_by_longest_border_edge(tm, uv.pmap());
+  const auto r = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(r.area_distortion < 1e-10);
+  BOOST_TEST(std::abs(r.l2_stretch - 1) < 1e-12);
+  BOOST_TEST(r.boundary_length_error < 1e-12);
+  // no border: nothing happens
+  Soup s;
+  s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  s.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  const Surface_mesh closed = make<Surface_mesh>(s);
+  auto cuv = map_uv(closed, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; });
+  const auto before = cuv.map;
+  QD::normalize_by_longest_border_edge(closed, cuv.pmap());
+  BOOST_TEST((before == cuv.map));
+}

@@ -298,6 +298,42 @@ Distortion_report<TriangleMesh> face_measures(const TriangleMesh& tm, const Vert
 }
 } // namespace internal
 
+/// \ingroup PkgCGAL_QDRef
+/// applies to `uv` the similarity (uniform scale about one of its points, no
+/// rotation) that puts the endpoints of the longest border edge at their 3D
+/// distance: the normalisation the paper applies to free-border methods before
+/// measuring them. Does nothing if `tm` has no border or that edge has zero
+/// length in `uv`.
+/// \param np optional: `vertex_point_map`
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void normalize_by_longest_border_edge(const TriangleMesh& tm, VertexUVMap uv,
+                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  typename GT::halfedge_descriptor longest = GT::null_halfedge();
+  double best = -1;
+  for(typename GT::halfedge_descriptor h : halfedges(tm))
+    if(is_border(h, tm)) {
+      const double l = internal::distance3(internal::point_of<TriangleMesh>(source(h, tm), vpm),
+                                           internal::point_of<TriangleMesh>(target(h, tm), vpm));
+      if(l > best) { best = l; longest = h; }
+    }
+  if(longest == GT::null_halfedge()) return;
+  const auto a = internal::uv_of(uv, source(longest, tm)), b = internal::uv_of(uv, target(longest, tm));
+  const double l2 = std::hypot(b[0] - a[0], b[1] - a[1]);
+  if(!(l2 > 0)) return;
+  const double s = best / l2;
+  for(typename GT::vertex_descriptor v : vertices(tm)) {
+    const auto p = internal::uv_of(uv, v);
+    put(uv, v, Point_2(a[0] + s * (p[0] - a[0]), a[1] + s * (p[1] - a[1])));
+  }
+}
+
 // The single measures below return, on invalid input (no face, a face that is
 // not a triangle, a non-finite coordinate), the value that judges the map worst:
 // infinite distortion, every face flipped, an overlap. `compute_distortion()`

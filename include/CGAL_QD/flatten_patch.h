@@ -123,26 +123,6 @@ struct Flattening_result
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
-namespace internal_np {
-struct sparse_solver_t {};
-} // namespace internal_np
-
-namespace parameters {
-/// the solver of `flatten_patch()`'s interior system, a model of its solver concept
-/// (default: `Default_flattening_solver`).
-template <class T>
-CGAL::Named_function_parameters<T, internal_np::sparse_solver_t> sparse_solver(const T& s)
-{
-  return CGAL::Named_function_parameters<T, internal_np::sparse_solver_t>(s);
-}
-template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::sparse_solver_t, CGAL::Named_function_parameters<A, B, C>>
-sparse_solver(const T& s, const CGAL::Named_function_parameters<A, B, C>& rest)
-{
-  return CGAL::Named_function_parameters<T, internal_np::sparse_solver_t, CGAL::Named_function_parameters<A, B, C>>(
-      s, rest);
-}
-} // namespace parameters
 
 namespace internal {
 

@@ -19,6 +19,8 @@ namespace internal_np {
 struct constraint_tolerance_t {};
 struct angle_tolerance_t {};
 struct use_line_search_t {};
+struct sparse_solver_t {};
+struct vsa_tolerance_t {};
 
 } // namespace internal_np
 
@@ -49,6 +51,12 @@ CGAL_QD_ADD_NAMED_PARAMETER(angle_tolerance)
 /// search. Default: `true`. Switching it off gives the plain full-step
 /// iteration of the paper, which can oscillate on strongly curved patches.
 CGAL_QD_ADD_NAMED_PARAMETER(use_line_search)
+/// the solver of `flatten_patch()`'s interior system, a model of its solver
+/// concept (default: `Default_flattening_solver`).
+CGAL_QD_ADD_NAMED_PARAMETER(sparse_solver)
+/// the largest normalised L2,1 error of a chart after error-controlled VSA
+/// (see `Vsa_result::chart_error`). Default: 0.25.
+CGAL_QD_ADD_NAMED_PARAMETER(vsa_tolerance)
 
 #undef CGAL_QD_ADD_NAMED_PARAMETER
 

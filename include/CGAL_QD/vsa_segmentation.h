@@ -56,26 +56,6 @@ struct Vsa_result
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
-namespace internal_np {
-struct vsa_tolerance_t {};
-} // namespace internal_np
-
-namespace parameters {
-/// the largest normalised L2,1 error of a chart after error-controlled VSA
-/// (see `Vsa_result::chart_error`). Default: 0.25.
-template <class T>
-CGAL::Named_function_parameters<T, internal_np::vsa_tolerance_t> vsa_tolerance(const T& t)
-{
-  return CGAL::Named_function_parameters<T, internal_np::vsa_tolerance_t>(t);
-}
-template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::vsa_tolerance_t, CGAL::Named_function_parameters<A, B, C>>
-vsa_tolerance(const T& t, const CGAL::Named_function_parameters<A, B, C>& rest)
-{
-  return CGAL::Named_function_parameters<T, internal_np::vsa_tolerance_t, CGAL::Named_function_parameters<A, B, C>>(
-      t, rest);
-}
-} // namespace parameters
 
 namespace internal {
 
@@ -103,6 +83,20 @@ Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
   return Error_code::OK;
 }
 
+// unit normal and area of a face
+template <class TriangleMesh, class VPM>
+std::array<double, 4> face_normal_and_area(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+                                           const TriangleMesh& tm, const VPM& vpm)
+{
+  const auto h = halfedge(f, tm);
+  const auto a = point_of<TriangleMesh>(source(h, tm), vpm), b = point_of<TriangleMesh>(target(h, tm), vpm),
+             c = point_of<TriangleMesh>(target(next(h, tm), tm), vpm);
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  return {n[0] / len, n[1] / len, n[2] / len, 0.5 * len};
+}
+
 // Normalised L2,1 error of every chart, from per-face unit normals and areas.
 template <class TriangleMesh, class VPM, class FIM, class ChartOf>
 void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::size_t n_charts,
@@ -113,16 +107,11 @@ void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::s
   std::vector<std::array<double, 4>> face_data(num_faces(tm));  // unit normal, area
   area.assign(n_charts, 0.);
   for(typename GT::face_descriptor f : faces(tm)) {
-    const typename GT::halfedge_descriptor h = halfedge(f, tm);
-    const auto a = point_of<TriangleMesh>(source(h, tm), vpm), b = point_of<TriangleMesh>(target(h, tm), vpm),
-               c = point_of<TriangleMesh>(target(next(h, tm), tm), vpm);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const std::size_t k = chart_of(f);
-    face_data[get(fim, f)] = {n[0] / len, n[1] / len, n[2] / len, 0.5 * len};
-    for(int i = 0; i < 3; ++i) normal_sum[k][i] += 0.5 * n[i];
-    area[k] += 0.5 * len;
+    const std::array<double, 4> d = face_normal_and_area(f, tm, vpm);
+    face_data[get(fim, f)] = d;
+    for(int i = 0; i < 3; ++i) normal_sum[k][i] += d[3] * d[i];
+    area[k] += d[3];
   }
   error.assign(n_charts, 0.);
   for(std::size_t k = 0; k < n_charts; ++k) {
@@ -195,14 +184,10 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<std::array<double, 4>> sum(n, {0., 0., 0., 0.});  // S, A
   for(typename GT::face_descriptor f : faces(tm)) {
-    const typename GT::halfedge_descriptor h = halfedge(f, tm);
-    const auto a = point_of<TriangleMesh>(source(h, tm), vpm), b = point_of<TriangleMesh>(target(h, tm), vpm),
-               c = point_of<TriangleMesh>(target(next(h, tm), tm), vpm);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const std::array<double, 4> d = face_normal_and_area(f, tm, vpm);
     auto& s = sum[chart[get(fim, f)]];
-    for(int i = 0; i < 3; ++i) s[i] += 0.5 * nrm[i];
-    s[3] += 0.5 * std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    for(int i = 0; i < 3; ++i) s[i] += d[3] * d[i];
+    s[3] += d[3];
   }
   auto merged_error = [&](std::size_t x, std::size_t y) {
     const double sx = sum[x][0] + sum[y][0], sy = sum[x][1] + sum[y][1], sz = sum[x][2] + sum[y][2];
