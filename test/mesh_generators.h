@@ -176,6 +176,27 @@ inline std::function<P3(double, double)> flat_disk(double radius)
   return [=](double rho, double phi) { return P3{radius * rho * std::cos(phi), radius * rho * std::sin(phi), 0.}; };
 }
 
+// A torus (radii 2 and 0.7) as an n x m grid; `open` leaves out one face, which
+// makes a genus-1 patch with one border loop.
+inline Soup torus(std::size_t n, std::size_t m, bool open = false)
+{
+  Soup s;
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i) {
+      const double a = 2 * pi * i / n, b = 2 * pi * j / m;
+      s.points.push_back({(2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a), 0.7 * std::sin(b)});
+    }
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i) {
+      if(open && i == 0 && j == 0) continue;
+      const std::size_t a = j * n + i, b = j * n + (i + 1) % n, c = ((j + 1) % m) * n + (i + 1) % n,
+                        d = ((j + 1) % m) * n + i;
+      s.triangles.push_back({a, b, c});
+      s.triangles.push_back({a, c, d});
+    }
+  return s;
+}
+
 // Merges points that coincide (to 1e-9) and re-indexes the triangles.
 inline Soup merge_coincident_points(const Soup& in)
 {

@@ -113,20 +113,7 @@ BOOST_AUTO_TEST_CASE(several_components_and_a_handle)
   BOOST_TEST(r.number_of_charts == 12u);
   expect_valid_charts(two, chart, r.number_of_charts);
 
-  Soup torus;
-  const std::size_t n = 24, m = 12;
-  for(std::size_t j = 0; j < m; ++j)
-    for(std::size_t i = 0; i < n; ++i) {
-      const double a = 2 * pi * i / n, b = 2 * pi * j / m;
-      torus.points.push_back({(2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a), 0.7 * std::sin(b)});
-    }
-  for(std::size_t j = 0; j < m; ++j)
-    for(std::size_t i = 0; i < n; ++i) {
-      const std::size_t a = j * n + i, b = j * n + (i + 1) % n, c = ((j + 1) % m) * n + (i + 1) % n, d = ((j + 1) % m) * n + i;
-      torus.triangles.push_back({a, b, c});
-      torus.triangles.push_back({a, c, d});
-    }
-  const Surface_mesh tm = make<Surface_mesh>(torus);
+  const Surface_mesh tm = make<Surface_mesh>(torus(24, 12));
   Chart_map<Surface_mesh> tc;
   const auto rt = QD::segment_by_error_controlled_vsa(
       tm, boost::make_assoc_property_map(tc), QD::parameters::vsa_tolerance(0.1, CGAL::parameters::max_number_of_proxies(200)));

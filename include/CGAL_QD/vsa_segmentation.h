@@ -65,21 +65,11 @@ template <class TriangleMesh, class VPM>
 Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename boost::property_traits<VPM>::value_type Point;
   if(faces(tm).empty()) return Error_code::EMPTY_MESH;
   for(typename GT::face_descriptor f : faces(tm))
     if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3) return Error_code::NOT_TRIANGLE_MESH;
-  for(typename GT::vertex_descriptor v : vertices(tm)) {
-    const auto p = point_of<TriangleMesh>(v, vpm);
-    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return Error_code::INVALID_COORDINATES;
-  }
-  const typename CGAL::Kernel_traits<Point>::Kernel::Collinear_3 collinear =
-      typename CGAL::Kernel_traits<Point>::Kernel().collinear_3_object();
-  for(typename GT::face_descriptor f : faces(tm)) {
-    const typename GT::halfedge_descriptor h = halfedge(f, tm);
-    if(collinear(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))))
-      return Error_code::DEGENERATE_FACE;
-  }
+  if(has_non_finite_point<TriangleMesh>(vertices(tm), vpm)) return Error_code::INVALID_COORDINATES;
+  if(has_degenerate_face(tm, faces(tm), vpm)) return Error_code::DEGENERATE_FACE;
   return Error_code::OK;
 }
 

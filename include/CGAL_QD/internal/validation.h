@@ -67,6 +67,32 @@ inline double double_area3(const std::array<double, 3>& a, const std::array<doub
   return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
+// whether a vertex of the range has a NaN or infinite coordinate
+template <class TriangleMesh, class VertexRange, class VPM>
+bool has_non_finite_point(const VertexRange& vs, const VPM& vpm)
+{
+  for(const auto& v : vs) {
+    const auto p = point_of<TriangleMesh>(v, vpm);
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return true;
+  }
+  return false;
+}
+
+// whether a face of the range has collinear corners (exact predicate of the
+// points' kernel)
+template <class TriangleMesh, class FaceRange, class VPM>
+bool has_degenerate_face(const TriangleMesh& tm, const FaceRange& fs, const VPM& vpm)
+{
+  typedef typename boost::property_traits<VPM>::value_type Point;
+  const typename CGAL::Kernel_traits<Point>::Kernel::Collinear_3 collinear =
+      typename CGAL::Kernel_traits<Point>::Kernel().collinear_3_object();
+  for(const auto& f : fs) {
+    const auto h = halfedge(f, tm);
+    if(collinear(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)))) return true;
+  }
+  return false;
+}
+
 // Gathers the patch of `start` (a face) and checks it. Writes `patch` and
 // returns OK, or the first problem found. `vim`/`fim` are initialised index maps.
 template <class TriangleMesh, class VPM, class VIM, class FIM>
@@ -121,11 +147,7 @@ Error_code collect_and_validate_patch(const TriangleMesh& tm,
         return Error_code::NOT_TRIANGLE_MESH;
   }
 
-  for(vertex_descriptor v : patch.vertices) {
-    const auto p = point_of<TriangleMesh>(v, vpm);
-    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      return Error_code::INVALID_COORDINATES;
-  }
+  if(has_non_finite_point<TriangleMesh>(patch.vertices, vpm)) return Error_code::INVALID_COORDINATES;
   {
     // A vertex is manifold iff the circulation around halfedge(v) reaches every
     // halfedge that ends at v and meets at most one border halfedge: a pinched
@@ -183,15 +205,7 @@ Error_code collect_and_validate_patch(const TriangleMesh& tm,
     if(distance3(point_of<TriangleMesh>(source(b, tm), vpm),
                  point_of<TriangleMesh>(target(b, tm), vpm)) == 0.)
       return Error_code::DEGENERATE_EDGE;
-  // exact test with the kernel of the points
-  typedef typename boost::property_traits<VPM>::value_type Point;
-  const typename CGAL::Kernel_traits<Point>::Kernel::Collinear_3 collinear =
-      typename CGAL::Kernel_traits<Point>::Kernel().collinear_3_object();
-  for(face_descriptor f : patch.faces) {
-    const halfedge_descriptor h = halfedge(f, tm);
-    if(collinear(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))))
-      return Error_code::DEGENERATE_FACE;
-  }
+  if(has_degenerate_face(tm, patch.faces, vpm)) return Error_code::DEGENERATE_FACE;
   return Error_code::OK;
 }
 
