@@ -2,12 +2,12 @@
 # Installs what CGAL_QD needs on a Debian machine (run as root).
 # Core: CGAL 5.5, Eigen 3.4, Boost.Graph, Boost.Test, CMake, a C++17 compiler.
 # libcgal-demo brings CGAL's real test meshes; ccache speeds up rebuilds.
-# Optional accelerator, detected at configure time: SuiteSparse (CHOLMOD) with
-# OpenBLAS for the interior system of flatten_patch(); CGAL_QD builds and
-# works without them (Eigen's SimplicialLDLT).
+# Optional accelerators, detected at configure time: SuiteSparse (CHOLMOD) with
+# OpenBLAS for the interior system of flatten_patch(), TBB for the parallel
+# trials of the chart merging; CGAL_QD builds and works without them.
 set -euo pipefail
 packages=(build-essential cmake ccache libcgal-dev libeigen3-dev libboost-graph-dev
-          libboost-test-dev libcgal-demo libsuitesparse-dev libopenblas-dev)
+          libboost-test-dev libcgal-demo libsuitesparse-dev libopenblas-dev libtbb-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

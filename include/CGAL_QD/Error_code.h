@@ -7,6 +7,8 @@
 /// \file Error_code.h
 /// Status codes returned by every CGAL_QD algorithm.
 
+#include <ostream>
+
 namespace CGAL_QD {
 
 /// \ingroup PkgCGAL_QDRef
@@ -51,6 +53,10 @@ inline const char* error_message(Error_code code)
   }
   return "unknown error code";
 }
+
+/// \ingroup PkgCGAL_QDRef
+/// writes `error_message(code)`.
+inline std::ostream& operator<<(std::ostream& out, Error_code code) { return out << error_message(code); }
 
 } // namespace CGAL_QD
 

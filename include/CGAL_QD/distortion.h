@@ -10,6 +10,7 @@
 /// errors Pi_L and Pi_theta, flipped faces and exact global overlap S(Omega).
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -73,7 +74,32 @@ namespace internal {
 struct Distortion_options
 {
   bool border_crossings = true;
+  // border edges that come closer than this, relative to the diagonal of the
+  // UV bounding box of the border, touch rather than cross (0: exact tests)
+  double overlap_tolerance = 0;
 };
+
+// The signed distance of r from the line through p and q (positive on the left).
+inline double signed_distance(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                              const std::array<double, 2>& r)
+{
+  const double dx = q[0] - p[0], dy = q[1] - p[1], l = std::hypot(dx, dy);
+  if(!(l > 0)) return std::hypot(r[0] - p[0], r[1] - p[1]);
+  return (dx * (r[1] - p[1]) - dy * (r[0] - p[0])) / l;
+}
+
+// Whether segments ab and cd cross by more than delta: each has its endpoints
+// strictly on either side of the other's line, further than delta. Segments
+// that merely touch within delta (an endpoint on the other segment, two
+// coincident sides of a slit) do not cross.
+inline bool cross_beyond(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                         const std::array<double, 2>& c, const std::array<double, 2>& d, double delta)
+{
+  const double c1 = signed_distance(a, b, c), d1 = signed_distance(a, b, d);
+  const double a1 = signed_distance(c, d, a), b1 = signed_distance(c, d, b);
+  return ((c1 > delta && d1 < -delta) || (c1 < -delta && d1 > delta)) &&
+         ((a1 > delta && b1 < -delta) || (a1 < -delta && b1 > delta));
+}
 
 template <class UVMap, class V>
 std::array<double, 2> uv_of(const UVMap& uv, const V& v)
@@ -229,6 +255,12 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
       seg.emplace_back(EK::Point_2(a[0], a[1]), EK::Point_2(b[0], b[1]));
       boxes.emplace_back(seg.back().bbox(), k);
     }
+    double delta = 0;
+    if(opt.overlap_tolerance > 0) {
+      CGAL::Bbox_2 box;
+      for(const EK::Segment_2& sg : seg) box += sg.bbox();
+      delta = opt.overlap_tolerance * std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+    }
     auto report = [&](const Box& x, const Box& y) {
       const std::size_t i = x.info(), j = y.info();
       const halfedge_descriptor hi = border[i], hj = border[j];
@@ -240,7 +272,19 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
         const EK::Point_2& c = (shared == si) ? seg[i].source() : seg[i].target();
         const EK::Point_2& p = (shared == si) ? seg[i].target() : seg[i].source();
         const EK::Point_2& q = (shared == sj) ? seg[j].target() : seg[j].source();
-        crossing = CGAL::collinear(c, p, q) && !CGAL::collinear_are_ordered_along_line(p, c, q);
+        if(delta > 0) {
+          // folded back: q on the ray from c through p, within delta of it, and apart from p
+          const std::array<double, 2> cc = {c.x(), c.y()}, pp = {p.x(), p.y()}, qq = {q.x(), q.y()};
+          const double along = (pp[0] - cc[0]) * (qq[0] - cc[0]) + (pp[1] - cc[1]) * (qq[1] - cc[1]);
+          crossing = along > 0 && std::abs(signed_distance(cc, pp, qq)) <= delta &&
+                     std::hypot(pp[0] - qq[0], pp[1] - qq[1]) > delta;
+        } else {
+          crossing = CGAL::collinear(c, p, q) && !CGAL::collinear_are_ordered_along_line(p, c, q);
+        }
+      } else if(delta > 0) {
+        const auto pt = [](const EK::Point_2& p) { return std::array<double, 2>{p.x(), p.y()}; };
+        crossing = cross_beyond(pt(seg[i].source()), pt(seg[i].target()), pt(seg[j].source()), pt(seg[j].target()),
+                                delta);
       } else {
         crossing = CGAL::do_intersect(seg[i], seg[j]);
       }
@@ -267,7 +311,12 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from vertices to a 2D point type
-/// \param np optional: `vertex_point_map`, `vertex_index_map`
+/// \param np optional: `vertex_point_map`, `vertex_index_map`, and
+///   `CGAL_QD::parameters::overlap_tolerance`: border edges closer than this
+///   fraction of the diagonal of the border's UV bounding box touch rather than
+///   cross (default 0: exact tests, where touching is crossing). Two sides of a
+///   cut that develop onto each other touch; a crossing through a vertex lying
+///   within the tolerance of another border edge is not seen.
 /// \returns a report whose `status` is `OK`, `EMPTY_MESH`, `NOT_TRIANGLE_MESH` or
 ///          `INVALID_COORDINATES` (a NaN or infinite 3D or UV coordinate).
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -279,7 +328,9 @@ Distortion_report<TriangleMesh> compute_distortion(const TriangleMesh& tm, const
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  return internal::compute_distortion_impl(tm, uv, vpm, vim, internal::Distortion_options());
+  internal::Distortion_options opt;
+  opt.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), 0.);
+  return internal::compute_distortion_impl(tm, uv, vpm, vim, opt);
 }
 
 namespace internal {

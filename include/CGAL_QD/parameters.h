@@ -21,6 +21,15 @@ struct angle_tolerance_t {};
 struct use_line_search_t {};
 struct sparse_solver_t {};
 struct vsa_tolerance_t {};
+struct refine_boundaries_t {};
+struct refinement_band_width_t {};
+struct denoise_boundaries_t {};
+struct denoising_iterations_t {};
+struct merge_charts_t {};
+struct denoised_point_map_t {};
+struct overlap_tolerance_t {};
+struct max_area_distortion_t {};
+struct max_l2_stretch_t {};
 
 } // namespace internal_np
 
@@ -57,6 +66,34 @@ CGAL_QD_ADD_NAMED_PARAMETER(sparse_solver)
 /// the largest normalised L2,1 error of a chart after error-controlled VSA
 /// (see `Vsa_result::chart_error`). Default: 0.25.
 CGAL_QD_ADD_NAMED_PARAMETER(vsa_tolerance)
+/// whether `segment_quasi_developable()` runs the minimum-cut boundary
+/// refinement (step 2). Default: `true`.
+CGAL_QD_ADD_NAMED_PARAMETER(refine_boundaries)
+/// the half-width of the fuzzy band of `refine_chart_boundaries()`, relative to
+/// the square root of the smaller chart's area. Default: 0.15.
+CGAL_QD_ADD_NAMED_PARAMETER(refinement_band_width)
+/// whether `segment_quasi_developable()` runs the least-squares boundary
+/// denoising (step 3) on its copy of the points. Default: `false`.
+CGAL_QD_ADD_NAMED_PARAMETER(denoise_boundaries)
+/// the number of updates of `denoise_chart_boundaries()`. Default: 10.
+CGAL_QD_ADD_NAMED_PARAMETER(denoising_iterations)
+/// a writable vertex point map that receives the denoised positions in
+/// `segment_quasi_developable()` (it may be the mesh's own map, which then
+/// changes). Default: none; the denoised positions stay in the result.
+CGAL_QD_ADD_NAMED_PARAMETER(denoised_point_map)
+/// whether `segment_quasi_developable()` runs the boundary-based merging
+/// (step 4). Default: `true`.
+CGAL_QD_ADD_NAMED_PARAMETER(merge_charts)
+/// the largest area distortion A(Omega) of an accepted chart, as a fraction
+/// (0.10 is 10 %). Default: 0.10, the paper's threshold.
+CGAL_QD_ADD_NAMED_PARAMETER(max_area_distortion)
+/// the largest L2 stretch of an accepted chart. Default: 2.0, the paper's threshold.
+CGAL_QD_ADD_NAMED_PARAMETER(max_l2_stretch)
+
+/// border edges of a UV map closer than this fraction of the diagonal of the
+/// border's UV bounding box touch rather than cross (see `compute_distortion()`).
+/// Default: 0 in `compute_distortion()`, 1e-9 in the segmentation.
+CGAL_QD_ADD_NAMED_PARAMETER(overlap_tolerance)
 
 #undef CGAL_QD_ADD_NAMED_PARAMETER
 

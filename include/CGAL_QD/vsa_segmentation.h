@@ -118,17 +118,18 @@ void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::s
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
 }
 
-// a writable property map that stores face values in a vector by face index
+// a property map that stores face values in a vector by face index
 template <class Face, class FIM>
 struct Indexed_face_writer
 {
   typedef Face key_type;
   typedef std::size_t value_type;
   typedef std::size_t reference;
-  typedef boost::writable_property_map_tag category;
+  typedef boost::read_write_property_map_tag category;
   std::vector<std::size_t>* values;
   FIM index;
   friend void put(const Indexed_face_writer& m, const Face& f, std::size_t v) { (*m.values)[get(m.index, f)] = v; }
+  friend std::size_t get(const Indexed_face_writer& m, const Face& f) { return (*m.values)[get(m.index, f)]; }
 };
 
 // Renumbers chart ids into [0, n) and splits charts that are not connected

@@ -1,0 +1,150 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Segments a triangle mesh into quasi-developable charts (error-controlled VSA,
+// minimum-cut refinement, optional denoising, LPFB-based merging) and prints
+// what every step did, or one JSON object with --json.
+//
+// usage: segment_mesh <mesh> [--vsa-tolerance T] [--max-area-distortion 0.10]
+//                     [--max-stretch 2.0] [--denoise] [--no-refine] [--no-merge]
+//                     [--sequential] [--json] [--verbose]
+
+#include <CGAL_QD/segment_quasi_developable.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+namespace {
+
+int usage()
+{
+  std::cerr << "usage: segment_mesh <mesh> [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
+               "                    [--denoise] [--no-refine] [--no-merge] [--sequential] [--json] [--verbose]\n";
+  return EXIT_FAILURE;
+}
+
+bool read_number(int& i, int argc, char** argv, double& value)
+{
+  if(i + 1 >= argc) return false;
+  char* end = nullptr;
+  value = std::strtod(argv[++i], &end);
+  return end != argv[i] && *end == '\0' && std::isfinite(value) && value > 0;
+}
+
+// JSON has no NaN or infinity
+std::string number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+template <class Result>
+void print_json(const Result& r)
+{
+  std::cout << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": " << r.number_of_faces
+            << ", \"charts_after_vsa\": " << r.charts_after_vsa
+            << ", \"charts_after_refinement\": " << r.charts_after_refinement
+            << ", \"charts_before_merging\": " << r.charts_before_merging << ", \"charts\": " << r.number_of_charts
+            << ", \"merge_trials\": " << r.merging.trials << ", \"merges\": " << r.merging.merges
+            << ", \"max_area_distortion_pct\": " << number(r.max_area_distortion)
+            << ", \"max_l2_stretch\": " << number(r.max_l2_stretch)
+            << ", \"overlapping_charts\": " << r.overlapping_charts << ", \"rejected_charts\": " << r.rejected_charts
+            << ", \"seam_length\": " << number(r.seam_length) << ", \"time_vsa_ms\": " << number(r.time_vsa_ms)
+            << ", \"time_refine_ms\": " << number(r.time_refine_ms)
+            << ", \"time_denoise_ms\": " << number(r.time_denoise_ms)
+            << ", \"time_merge_ms\": " << number(r.time_merge_ms)
+            << ", \"time_flatten_ms\": " << number(r.time_flatten_ms)
+            << ", \"time_total_ms\": " << number(r.time_total_ms) << ", \"per_chart\": [";
+  for(std::size_t k = 0; k < r.charts.size(); ++k) {
+    const CGAL_QD::Chart_report& c = r.charts[k];
+    std::cout << (k ? ", " : "") << "{\"chart\": " << k << ", \"status\": \"" << CGAL_QD::error_message(c.status)
+              << "\", \"faces\": " << c.number_of_faces << ", \"area\": " << number(c.area)
+              << ", \"border_loops\": " << c.number_of_border_loops
+              << ", \"area_distortion_pct\": " << number(c.area_distortion)
+              << ", \"l2_stretch\": " << number(c.l2_stretch) << ", \"overlap\": " << (c.overlap ? "true" : "false")
+              << "}";
+  }
+  std::cout << "]}\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2) return usage();
+  const std::string path = argv[1];
+  double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0;
+  bool json = false, verbose = false, denoise = false, refine = true, merge = true, sequential = false;
+  for(int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--json") json = true;
+    else if(a == "--verbose") verbose = true;
+    else if(a == "--denoise") denoise = true;
+    else if(a == "--no-refine") refine = false;
+    else if(a == "--no-merge") merge = false;
+    else if(a == "--sequential") sequential = true;
+    else if(a == "--vsa-tolerance") { if(!read_number(i, argc, argv, vsa_tolerance)) return usage(); }
+    else if(a == "--max-area-distortion") { if(!read_number(i, argc, argv, max_area)) return usage(); }
+    else if(a == "--max-stretch") { if(!read_number(i, argc, argv, max_stretch)) return usage(); }
+    else return usage();
+  }
+
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || faces(mesh).empty()) {
+    std::cerr << "segment_mesh: cannot read a polygon mesh from '" << path << "'\n";
+    return EXIT_FAILURE;
+  }
+  if(!CGAL::is_triangle_mesh(mesh)) {
+    std::cerr << "segment_mesh: '" << path << "' has faces that are not triangles\n";
+    return EXIT_FAILURE;
+  }
+
+  auto chart = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
+  namespace QP = CGAL_QD::parameters;
+  // CGAL_QD's parameters take the rest of the pack as a second argument
+  const auto np = QP::vsa_tolerance(
+      vsa_tolerance,
+      QP::max_area_distortion(
+          max_area, QP::max_l2_stretch(
+                        max_stretch, QP::denoise_boundaries(
+                                         denoise, QP::refine_boundaries(
+                                                      refine, QP::merge_charts(merge, CGAL::parameters::verbose(verbose)))))));
+  const CGAL_QD::Segmentation_result<Mesh> r =
+      sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
+                 : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
+  if(json) {
+    print_json(r);
+    return r ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
+  if(!r) {
+    std::cerr << "segment_mesh: " << CGAL_QD::error_message(r.status) << "\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << path << ": " << r.number_of_faces << " faces\n"
+            << "  VSA            " << r.charts_after_vsa << " charts, " << r.time_vsa_ms << " ms\n"
+            << "  refinement     " << r.charts_after_refinement << " charts, " << r.time_refine_ms << " ms\n"
+            << "  denoising      " << (denoise ? std::to_string(r.time_denoise_ms) + " ms" : std::string("off"))
+            << "\n"
+            << "  merging        " << r.charts_before_merging << " -> " << r.number_of_charts << " charts, "
+            << r.merging.trials << " trials, " << r.time_merge_ms << " ms\n"
+            << "  flattening     " << r.time_flatten_ms << " ms\n"
+            << "  max A(Omega)   " << r.max_area_distortion << " %\n"
+            << "  max L2         " << r.max_l2_stretch << "\n"
+            << "  overlapping    " << r.overlapping_charts << " charts\n"
+            << "  seam length    " << r.seam_length << "\n"
+            << "  total          " << r.time_total_ms << " ms\n";
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,668 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_CHART_MERGING_H
+#define CGAL_QD_CHART_MERGING_H
+
+/// \file chart_merging.h
+/// Step 4 of the quasi-developable segmentation (paper Section 4.2): the
+/// boundary-based greedy merging of charts, each merge tried by LPFB+IP and
+/// accepted only if the merged chart stays within the distortion thresholds.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/distortion.h>
+#include <CGAL_QD/extract_chart.h>
+#include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/vsa_segmentation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <queue>
+#include <thread>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// how one chart flattens by LPFB+IP, cut open along its seams and cuts.
+struct Chart_report
+{
+  /// `OK`, or why the chart could not be flattened (`NOT_A_DISK` for a chart with a handle, ...)
+  Error_code status = Error_code::OK;
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_border_loops = 0;  ///< of the chart cut open
+  double area = 0;                         ///< 3D area
+  double area_distortion = 0;              ///< A(Omega), in percent
+  double l2_stretch = 0;                   ///< Sander's L2 stretch (not normalised: LPFB keeps the border lengths)
+  bool overlap = false;                    ///< S(Omega): a flipped face, a branch vertex or a border crossing
+  /// whether the chart is within the thresholds: status `OK`, A(Omega) and L2 at most the thresholds, no overlap
+  bool accepted = false;
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// diagnostics of `merge_charts_by_boundaries()`.
+template <class TriangleMesh>
+struct Merging_result
+{
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+  Error_code status = Error_code::OK;
+  std::size_t charts_before = 0;
+  /// charts added by splitting input charts that were themselves beyond the thresholds
+  std::size_t charts_split = 0;
+  std::size_t number_of_charts = 0;
+  std::size_t boundary_curves = 0;  ///< maximal edge chains between the same two charts, after splitting
+  std::size_t trials = 0;           ///< merged charts flattened and measured
+  std::size_t merges = 0;           ///< accepted trials (curves removed)
+  /// the edges where the surface is cut: between two charts, or remaining curves inside a chart
+  std::vector<edge_descriptor> seam_edges;
+  double seam_length = 0;
+  double time_split_ms = 0;
+  double time_ms = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+namespace internal {
+
+struct Merge_thresholds
+{
+  double max_area_distortion = 0.10;  // fraction
+  double max_l2_stretch = 2.0;
+  // the two sides of a cut inside a developable chart develop onto each other:
+  // they touch, which is not an overlap
+  double overlap_tolerance = 1e-9;
+};
+
+// Flattens a set of faces of `tm` cut open along the cut edges, by LPFB+IP,
+// and measures the result. Thread-safe: `evaluate` only reads shared data.
+template <class TriangleMesh, class FIM, class VIM>
+class Chart_evaluator
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+  Chart_evaluator(const TriangleMesh& tm, const FIM& fim, const VIM& vim,
+                  const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds)
+      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds)
+  {}
+
+  // `faces` in increasing face index; `corner_uv`, if given, receives the UVs
+  // of the corners (3 per face, in the order of `faces`)
+  template <class IsCut>
+  Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
+                        std::vector<std::array<double, 2>>* corner_uv = nullptr) const
+  {
+    Chart_report rep;
+    rep.number_of_faces = faces.size();
+    std::vector<long> local(num_faces(m_tm), -1);
+    for(std::size_t i = 0; i < faces.size(); ++i) local[get(m_fim, faces[i])] = static_cast<long>(i);
+    Wedges<TriangleMesh> wedges;
+    compute_wedges(m_tm, m_fim, faces, local, is_cut, wedges);
+    Mesh sm;
+    sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
+               static_cast<typename Mesh::size_type>(3 * faces.size()),
+               static_cast<typename Mesh::size_type>(faces.size()));
+    for(std::size_t w = 0; w < wedges.size(); ++w) {
+      const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
+      sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
+    }
+    for(std::size_t i = 0; i < faces.size(); ++i) {
+      typedef typename Mesh::Vertex_index V;
+      const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
+                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
+                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 2])));
+      if(f == Mesh::null_face()) {
+        rep.status = Error_code::NON_MANIFOLD;
+        return rep;
+      }
+      rep.area += double_area3(m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i]])],
+                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 1]])],
+                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 2]])]) / 2;
+    }
+    auto uv = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
+    const Flattening_result flat = flatten_patch(sm, uv);
+    rep.number_of_border_loops = flat.border.number_of_loops;
+    if(!flat) {
+      rep.status = flat.status;
+      return rep;
+    }
+    const Distortion_report<Mesh> d =
+        compute_distortion(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
+    if(!d) {
+      rep.status = d.status;
+      return rep;
+    }
+    rep.area_distortion = d.area_distortion;
+    rep.l2_stretch = d.l2_stretch;
+    rep.overlap = d.overlap;
+    rep.accepted = rep.area_distortion <= 100. * m_thresholds.max_area_distortion &&
+                   rep.l2_stretch <= m_thresholds.max_l2_stretch && !rep.overlap;
+    if(corner_uv) {
+      corner_uv->resize(3 * faces.size());
+      for(std::size_t c = 0; c < 3 * faces.size(); ++c) {
+        const K::Point_2& p = get(uv, typename Mesh::Vertex_index(
+                                          static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])));
+        (*corner_uv)[c] = {p.x(), p.y()};
+      }
+    }
+    return rep;
+  }
+
+private:
+  const TriangleMesh& m_tm;
+  FIM m_fim;
+  VIM m_vim;
+  const std::vector<std::array<double, 3>>& m_points;
+  Merge_thresholds m_thresholds;
+};
+
+// Runs `task(i)` for i in [0, n), in parallel when ConcurrencyTag is
+// CGAL::Parallel_tag and TBB is linked.
+template <class ConcurrencyTag, class Task>
+void for_each_index(std::size_t n, const Task& task)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && n > 1) {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { task(i); });
+    return;
+  }
+#endif
+  for(std::size_t i = 0; i < n; ++i) task(i);
+}
+
+template <class ConcurrencyTag>
+std::size_t batch_size()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    return (std::max)(2u, 2 * std::thread::hardware_concurrency());
+#endif
+  return 1;
+}
+
+// Splits a connected set of faces in two connected halves: the faces closer
+// (along face centroids) to one of two far-apart seed faces than to the other.
+template <class TriangleMesh, class FIM>
+void split_in_two(const TriangleMesh& tm, const FIM& fim, const std::vector<Face_geometry>& geo,
+                  const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& members,
+                  std::vector<std::size_t>& chart, std::size_t new_id)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  const std::size_t id = chart[get(fim, members.front())];
+  std::vector<double> dist(chart.size(), std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> side(chart.size(), 0);
+  std::vector<face_descriptor> face_of(chart.size());
+  for(face_descriptor f : members) face_of[get(fim, f)] = f;
+  // Dijkstra from seeds; each face takes the side of its parent, so both sides are connected
+  auto run = [&](const std::vector<std::size_t>& seeds) {
+    for(face_descriptor f : members) dist[get(fim, f)] = std::numeric_limits<double>::infinity();
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for(std::size_t s = 0; s < seeds.size(); ++s) {
+      dist[seeds[s]] = 0;
+      side[seeds[s]] = s;
+      queue.emplace(0., seeds[s]);
+    }
+    std::size_t last = seeds.front();
+    while(!queue.empty()) {
+      const Item it = queue.top();
+      queue.pop();
+      if(it.first > dist[it.second]) continue;
+      last = it.second;
+      for(auto h : CGAL::halfedges_around_face(halfedge(face_of[it.second], tm), tm)) {
+        const auto o = opposite(h, tm);
+        if(is_border(o, tm)) continue;
+        const std::size_t g = get(fim, face(o, tm));
+        if(chart[g] != id) continue;
+        const double d = it.first + distance3(geo[it.second].centroid, geo[g].centroid);
+        if(d < dist[g]) {
+          dist[g] = d;
+          side[g] = side[it.second];
+          queue.emplace(d, g);
+        }
+      }
+    }
+    return last;  // the furthest face
+  };
+  const std::size_t a = run({get(fim, members.front())});
+  const std::size_t b = run({a});
+  run({a, b});
+  for(face_descriptor f : members)
+    if(side[get(fim, f)] == 1) chart[get(fim, f)] = new_id;
+}
+
+// The state of a boundary-based merging over a fixed set of initial charts.
+template <class TriangleMesh, class FIM, class HIM, class VIM>
+class Boundary_merger
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef Chart_evaluator<TriangleMesh, FIM, VIM> Evaluator;
+  typedef std::function<void(const char*, double)> Progress;
+
+  struct Curve
+  {
+    std::size_t a, b;  // initial charts on either side, a < b
+    std::vector<halfedge_descriptor> halfedges;  // one per edge
+    double length = 0;
+    bool eliminated = false;
+    bool active = true;  // in the heap, or to be tried again when a side changes
+  };
+
+  Boundary_merger(const TriangleMesh& tm, const FIM& fim, const HIM& him, const Evaluator& evaluator,
+                  std::vector<std::size_t>& chart, std::size_t n, const std::vector<std::array<double, 3>>& points,
+                  const VIM& vim)
+      : m_tm(tm), m_fim(fim), m_him(him), m_eval(evaluator), m_chart(chart), m_n(n), m_points(points), m_vim(vim)
+  {
+    m_face_of.resize(chart.size());
+    for(face_descriptor f : faces(tm)) m_face_of[get(fim, f)] = f;
+  }
+
+  // Splits every chart that does not flatten within the thresholds, until all do.
+  template <class ConcurrencyTag>
+  std::size_t split_failing_charts(const std::vector<Face_geometry>& geo, const Progress& progress)
+  {
+    const std::size_t before = m_n;
+    std::vector<std::size_t> todo(m_n);
+    for(std::size_t k = 0; k < m_n; ++k) todo[k] = k;
+    const auto no_cut = [](halfedge_descriptor) { return false; };
+    while(!todo.empty()) {
+      std::vector<std::vector<face_descriptor>> members(m_n);
+      for(std::size_t i = 0; i < m_chart.size(); ++i) members[m_chart[i]].push_back(m_face_of[i]);
+      std::vector<char> ok(todo.size(), 0);
+      for_each_index<ConcurrencyTag>(todo.size(), [&](std::size_t t) {
+        ok[t] = members[todo[t]].size() <= 1 || m_eval.evaluate(members[todo[t]], no_cut).accepted;
+      });
+      std::vector<std::size_t> next;
+      for(std::size_t t = 0; t < todo.size(); ++t) {
+        if(ok[t]) continue;
+        split_in_two(m_tm, m_fim, geo, members[todo[t]], m_chart, m_n);
+        next.push_back(todo[t]);
+        next.push_back(m_n++);
+      }
+      todo.swap(next);
+      if(progress) progress("split", 0.5);
+    }
+    return m_n - before;
+  }
+
+  void build_curves()
+  {
+    m_curve_of.assign(num_halfedges(m_tm), -1);
+    m_curves.clear();
+    // group the border edges of each pair of charts into connected chains:
+    // edges of the same pair that share a vertex are in the same curve
+    std::vector<halfedge_descriptor> border;
+    for(auto e : edges(m_tm)) {
+      const halfedge_descriptor h = halfedge(e, m_tm);
+      if(is_border_edge(h, m_tm)) continue;
+      if(chart_of(h) != chart_of(opposite(h, m_tm))) border.push_back(h);
+    }
+    std::vector<std::size_t> parent(border.size());
+    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto find = [&](std::size_t x) {
+      while(parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    auto pair_of = [&](halfedge_descriptor h) {
+      const std::size_t x = chart_of(h), y = chart_of(opposite(h, m_tm));
+      return std::make_pair((std::min)(x, y), (std::max)(x, y));
+    };
+    std::vector<long> edge_at(num_halfedges(m_tm), -1);  // border edge index by halfedge
+    for(std::size_t i = 0; i < border.size(); ++i) {
+      edge_at[get(m_him, border[i])] = static_cast<long>(i);
+      edge_at[get(m_him, opposite(border[i], m_tm))] = static_cast<long>(i);
+    }
+    for(std::size_t i = 0; i < border.size(); ++i)
+      for(halfedge_descriptor end : {border[i], opposite(border[i], m_tm)})
+        for(halfedge_descriptor h : CGAL::halfedges_around_target(end, m_tm)) {
+          const long j = edge_at[get(m_him, h)];
+          if(j < 0 || std::size_t(j) == i || pair_of(border[j]) != pair_of(border[i])) continue;
+          const std::size_t x = find(i), y = find(std::size_t(j));
+          if(x != y) parent[(std::max)(x, y)] = (std::min)(x, y);
+        }
+    std::vector<long> curve_of_root(border.size(), -1);
+    for(std::size_t i = 0; i < border.size(); ++i) {
+      const std::size_t r = find(i);
+      if(curve_of_root[r] < 0) {
+        curve_of_root[r] = static_cast<long>(m_curves.size());
+        Curve c;
+        std::tie(c.a, c.b) = pair_of(border[i]);
+        m_curves.push_back(c);
+      }
+      Curve& c = m_curves[curve_of_root[r]];
+      c.halfedges.push_back(border[i]);
+      c.length += distance3(m_points[get(m_vim, source(border[i], m_tm))], m_points[get(m_vim, target(border[i], m_tm))]);
+      m_curve_of[get(m_him, border[i])] = m_curve_of[get(m_him, opposite(border[i], m_tm))] = curve_of_root[r];
+    }
+    m_curves_of_chart.assign(m_n, {});
+    for(std::size_t c = 0; c < m_curves.size(); ++c) {
+      m_curves_of_chart[m_curves[c].a].push_back(c);
+      m_curves_of_chart[m_curves[c].b].push_back(c);
+    }
+  }
+
+  std::size_t number_of_curves() const { return m_curves.size(); }
+
+  // The greedy merging of the paper, Section 4.2. Returns (trials, merges).
+  template <class ConcurrencyTag>
+  std::pair<std::size_t, std::size_t> merge(const std::vector<Face_geometry>& geo, const Progress& progress,
+                                            bool verbose, bool run = true)
+  {
+    m_parent.resize(m_n);
+    m_members.assign(m_n, {});
+    m_area.assign(m_n, 0.);
+    m_version.assign(m_n, 0);
+    for(std::size_t k = 0; k < m_n; ++k) {
+      m_parent[k] = k;
+      m_members[k].push_back(k);
+    }
+    m_faces_of_chart.assign(m_n, {});
+    for(std::size_t i = 0; i < m_chart.size(); ++i) {
+      m_faces_of_chart[m_chart[i]].push_back(m_face_of[i]);
+      m_area[m_chart[i]] += geo[i].area;
+    }
+    // heap of (key, -curve); the stamp of a curve invalidates its older entries
+    typedef std::tuple<double, long, std::size_t> Entry;
+    std::priority_queue<Entry> heap;
+    std::vector<std::size_t> stamp(m_curves.size(), 0);
+    auto push = [&](std::size_t c) {
+      m_curves[c].active = true;
+      heap.emplace(key(c), -static_cast<long>(c), ++stamp[c]);
+    };
+    if(run)
+      for(std::size_t c = 0; c < m_curves.size(); ++c) push(c);
+
+    struct Cached
+    {
+      std::size_t r1 = std::size_t(-1), r2 = 0, v1 = 0, v2 = 0;
+      Chart_report report;
+    };
+    std::vector<Cached> cache(m_curves.size());
+    auto cache_valid = [&](std::size_t c) {
+      const Cached& x = cache[c];
+      const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
+      return x.r1 == r1 && x.r2 == r2 && x.v1 == m_version[r1] && x.v2 == m_version[r2];
+    };
+
+    std::size_t trials = 0, merges = 0, decided = 0;
+    const std::size_t batch = batch_size<ConcurrencyTag>();
+    while(!heap.empty()) {
+      std::vector<std::size_t> take;
+      while(!heap.empty() && take.size() < batch) {
+        const Entry e = heap.top();
+        heap.pop();
+        const std::size_t c = static_cast<std::size_t>(-std::get<1>(e));
+        if(std::get<2>(e) != stamp[c] || !m_curves[c].active || m_curves[c].eliminated) continue;
+        take.push_back(c);
+      }
+      std::vector<std::size_t> to_evaluate;
+      for(std::size_t c : take)
+        if(!cache_valid(c)) to_evaluate.push_back(c);
+      for_each_index<ConcurrencyTag>(to_evaluate.size(), [&](std::size_t t) {
+        const std::size_t c = to_evaluate[t];
+        Cached x;
+        x.r1 = find(m_curves[c].a);
+        x.r2 = find(m_curves[c].b);
+        x.v1 = m_version[x.r1];
+        x.v2 = m_version[x.r2];
+        x.report = trial(c);
+        cache[c] = x;
+      });
+      trials += to_evaluate.size();
+      for(std::size_t t = 0; t < take.size(); ++t) {
+        const std::size_t c = take[t];
+        const Chart_report& rep = cache[c].report;
+        if(verbose)
+          std::cerr << "  curve " << c << " between charts " << find(m_curves[c].a) << " and " << find(m_curves[c].b)
+                    << ": " << (rep.accepted ? "merged" : "kept") << " (" << error_message(rep.status) << ", A "
+                    << rep.area_distortion << " %, L2 " << rep.l2_stretch << (rep.overlap ? ", overlap" : "") << ")\n";
+        if(!rep.accepted) {
+          m_curves[c].active = false;
+          ++decided;
+          continue;
+        }
+        ++merges;
+        ++decided;
+        accept(c);
+        // the rest of the batch goes back: the sequential run would see the new keys
+        for(std::size_t u = t + 1; u < take.size(); ++u) push(take[u]);
+        for(std::size_t k : m_members[find(m_curves[c].a)])
+          for(std::size_t d : m_curves_of_chart[k])
+            if(!m_curves[d].eliminated) push(d);
+        break;
+      }
+      if(progress) progress("merge", (std::min)(1., double(decided) / double((std::max<std::size_t>)(1, m_curves.size() + merges))));
+    }
+    // final chart ids: patches numbered by their smallest face index
+    std::vector<std::size_t> id(m_n, std::size_t(-1));
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < m_chart.size(); ++i) {
+      const std::size_t r = find(m_chart[i]);
+      if(id[r] == std::size_t(-1)) id[r] = count++;
+    }
+    for(std::size_t& k : m_chart) k = id[find(k)];
+    m_final_count = count;
+    return std::make_pair(trials, merges);
+  }
+
+  std::size_t number_of_final_charts() const { return m_final_count; }
+
+  // whether the edge of h is cut: a curve not eliminated
+  bool is_seam(halfedge_descriptor h) const
+  {
+    const long c = m_curve_of[get(m_him, h)];
+    return c >= 0 && !m_curves[c].eliminated;
+  }
+
+  template <class OutputIterator>
+  double seams(OutputIterator out) const
+  {
+    double length = 0;
+    for(const Curve& c : m_curves) {
+      if(c.eliminated) continue;
+      length += c.length;
+      for(halfedge_descriptor h : c.halfedges) *out++ = edge(h, m_tm);
+    }
+    return length;
+  }
+
+private:
+  std::size_t chart_of(halfedge_descriptor h) const { return m_chart[get(m_fim, face(h, m_tm))]; }
+
+  std::size_t find(std::size_t x) const
+  {
+    while(m_parent[x] != x) x = m_parent[x];
+    return x;
+  }
+
+  double key(std::size_t c) const
+  {
+    const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
+    return r1 == r2 ? m_area[r1] : m_area[r1] + m_area[r2];
+  }
+
+  Chart_report trial(std::size_t c) const
+  {
+    std::vector<face_descriptor> fs;
+    const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
+    for(std::size_t r : {r1, r2}) {
+      for(std::size_t k : m_members[r]) fs.insert(fs.end(), m_faces_of_chart[k].begin(), m_faces_of_chart[k].end());
+      if(r1 == r2) break;
+    }
+    std::sort(fs.begin(), fs.end(), [&](face_descriptor x, face_descriptor y) { return get(m_fim, x) < get(m_fim, y); });
+    return m_eval.evaluate(fs, [&](halfedge_descriptor h) {
+      const long d = m_curve_of[get(m_him, h)];
+      return d >= 0 && std::size_t(d) != c && !m_curves[d].eliminated;
+    });
+  }
+
+  void accept(std::size_t c)
+  {
+    m_curves[c].eliminated = true;
+    std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
+    if(r1 != r2) {
+      if(r2 < r1) std::swap(r1, r2);
+      m_parent[r2] = r1;
+      m_members[r1].insert(m_members[r1].end(), m_members[r2].begin(), m_members[r2].end());
+      m_members[r2].clear();
+      m_area[r1] += m_area[r2];
+    }
+    ++m_version[r1];
+  }
+
+  const TriangleMesh& m_tm;
+  FIM m_fim;
+  HIM m_him;
+  const Evaluator& m_eval;
+  std::vector<std::size_t>& m_chart;
+  std::size_t m_n;
+  const std::vector<std::array<double, 3>>& m_points;
+  VIM m_vim;
+  std::vector<face_descriptor> m_face_of;
+  std::vector<long> m_curve_of;  // by halfedge index
+  std::vector<Curve> m_curves;
+  std::vector<std::vector<std::size_t>> m_curves_of_chart;
+  std::vector<std::size_t> m_parent, m_version;
+  std::vector<std::vector<std::size_t>> m_members;
+  std::vector<std::vector<face_descriptor>> m_faces_of_chart;
+  std::vector<double> m_area;
+  std::size_t m_final_count = 0;
+};
+
+template <class TriangleMesh, class NamedParameters>
+Merge_thresholds merge_thresholds_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Merge_thresholds t;
+  t.max_area_distortion = choose_parameter(get_parameter(np, internal_np::max_area_distortion_t()), t.max_area_distortion);
+  t.max_l2_stretch = choose_parameter(get_parameter(np, internal_np::max_l2_stretch_t()), t.max_l2_stretch);
+  t.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), t.overlap_tolerance);
+  return t;
+}
+
+template <class TriangleMesh, class VPM, class VIM>
+std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const VPM& vpm, const VIM& vim)
+{
+  std::vector<std::array<double, 3>> points(num_vertices(tm));
+  for(auto v : vertices(tm)) points[get(vim, v)] = point_of<TriangleMesh>(v, vpm);
+  return points;
+}
+
+} // namespace internal
+
+/// \ingroup PkgCGAL_QDRef
+/// merges charts by removing the boundary curves between them (paper Section
+/// 4.2). A boundary curve is a maximal chain of edges between the same two
+/// charts. First, every chart that does not itself pass the test below is
+/// split in two (by distance to two far-apart faces) until all pass. Then the
+/// curves enter a max-heap keyed by the area of the charts on either side; the
+/// top curve is tried: the chart obtained by removing it, cut open along all
+/// other remaining curves inside it (dangling cuts are allowed), is flattened
+/// by LPFB+IP (`flatten_patch()`, virtual cutting for holes). The removal is
+/// accepted iff the flattening succeeds, A(Omega) <= `max_area_distortion`,
+/// L2 <= `max_l2_stretch` and there is no overlap. A trial that would create a
+/// handle, or a chart that is not a disk with holes after cutting, fails and
+/// is rejected. After an acceptance, every remaining curve of the merged chart
+/// takes its new key (curves rejected before are tried again, since the chart
+/// changed). Ties are broken by curve order, so the result is deterministic.
+///
+/// Trials of the curves at the top of the heap are independent and run in
+/// parallel with `ConcurrencyTag = CGAL::Parallel_tag` when TBB is linked; the
+/// decisions are taken in heap order, so the result is the sequential one.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
+/// \tparam FaceChartMap a model of `ReadWritePropertyMap` from faces to an integral chart id; it receives
+///         ids in `[0, n)`
+/// \param np optional named parameters:
+///   - `CGAL_QD::parameters::max_area_distortion` (default 0.10), `CGAL_QD::parameters::max_l2_stretch` (default 2.0)
+///   - `CGAL_QD::parameters::overlap_tolerance`: see `compute_distortion()` (default 1e-9: the sides of a
+///     cut that develop onto each other touch, they do not overlap)
+///   - `callback`: called with (step name, fraction done) during the run
+///   - `verbose`: print every trial to `std::cerr` (default `false`)
+///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
+/// \returns a `Merging_result` whose `seam_edges` are the edges to cut (the
+///          borders between charts and the curves left inside charts); on
+///          invalid input (the statuses of `segment_by_error_controlled_vsa()`)
+///          nothing is written.
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, FaceChartMap face_chart,
+                                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto start = std::chrono::steady_clock::now();
+  Merging_result<TriangleMesh> result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const std::function<void(const char*, double)> progress =
+      choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
+  result.status = internal::validate_mesh_to_segment(tm, vpm);
+  if(result.status != Error_code::OK) return result;
+
+  std::vector<std::size_t> chart, ids;
+  internal::read_charts(tm, face_chart, fim, chart, ids);
+  // a chart made of several pieces counts as several charts
+  const std::size_t n = internal::make_charts_connected(tm, fim, chart);
+  result.charts_before = n;
+  const std::vector<std::array<double, 3>> points = internal::points_by_index(tm, vpm, vim);
+  const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
+  typedef typename std::remove_const<decltype(fim)>::type FIM;
+  typedef typename std::remove_const<decltype(him)>::type HIM;
+  typedef typename std::remove_const<decltype(vim)>::type VIM;
+  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points,
+                                                              internal::merge_thresholds_from<TriangleMesh>(np));
+  internal::Boundary_merger<TriangleMesh, FIM, HIM, VIM> merger(tm, fim, him, evaluator, chart, n, points, vim);
+  auto t = std::chrono::steady_clock::now();
+  result.charts_split = merger.template split_failing_charts<ConcurrencyTag>(geo, progress);
+  result.time_split_ms = internal::milliseconds_since(t);
+  merger.build_curves();
+  result.boundary_curves = merger.number_of_curves();
+  std::tie(result.trials, result.merges) = merger.template merge<ConcurrencyTag>(geo, progress, verbose);
+  result.number_of_charts = merger.number_of_final_charts();
+  result.seam_length = merger.seams(std::back_inserter(result.seam_edges));
+  typedef typename boost::property_traits<FaceChartMap>::value_type Id;
+  for(auto f : faces(tm)) put(face_chart, f, static_cast<Id>(chart[get(fim, f)]));
+  result.time_ms = internal::milliseconds_since(start);
+  return result;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_CHART_MERGING_H

@@ -1,0 +1,141 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_INTERNAL_CHARTS_H
+#define CGAL_QD_INTERNAL_CHARTS_H
+
+// Charts of a segmentation held as a vector of compact ids by face index, and
+// the per-face geometry the segmentation steps share.
+
+#include <CGAL_QD/internal/validation.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// Reads the chart ids of the faces into `chart` (by face index), renumbered
+// into [0, n) in increasing order of the given ids; `ids` receives the given
+// id of every compact id. Returns n.
+template <class TriangleMesh, class FaceChartMap, class FIM>
+std::size_t read_charts(const TriangleMesh& tm, const FaceChartMap& face_chart, const FIM& fim,
+                        std::vector<std::size_t>& chart, std::vector<std::size_t>& ids)
+{
+  chart.assign(num_faces(tm), 0);
+  for(auto f : faces(tm)) chart[get(fim, f)] = static_cast<std::size_t>(get(face_chart, f));
+  ids = chart;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  for(std::size_t& c : chart) c = static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), c) - ids.begin());
+  return ids.size();
+}
+
+// Per-face unit normal, area and centroid.
+struct Face_geometry
+{
+  std::array<double, 3> normal, centroid;
+  double area;
+};
+
+template <class TriangleMesh, class VPM, class FIM>
+std::vector<Face_geometry> face_geometry(const TriangleMesh& tm, const VPM& vpm, const FIM& fim)
+{
+  std::vector<Face_geometry> g(num_faces(tm));
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    const auto a = point_of<TriangleMesh>(source(h, tm), vpm), b = point_of<TriangleMesh>(target(h, tm), vpm),
+               c = point_of<TriangleMesh>(target(next(h, tm), tm), vpm);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    Face_geometry& x = g[get(fim, f)];
+    for(int i = 0; i < 3; ++i) {
+      x.normal[i] = len > 0 ? n[i] / len : 0.;
+      x.centroid[i] = (a[i] + b[i] + c[i]) / 3.;
+    }
+    x.area = 0.5 * len;
+  }
+  return g;
+}
+
+// Whether the faces of chart `k` (given by `members`) are connected through
+// edges, looking only at faces whose `label` is k.
+template <class TriangleMesh, class FIM>
+bool chart_is_connected(const TriangleMesh& tm, const FIM& fim,
+                        const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& members,
+                        const std::vector<std::size_t>& label, std::size_t k)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<typename GT::face_descriptor> queue;
+  std::vector<char> seen(label.size(), 0);
+  std::size_t count = 0, total = 0;
+  for(auto f : members)
+    if(label[get(fim, f)] == k) {
+      ++total;
+      if(queue.empty()) {
+        queue.push_back(f);
+        seen[get(fim, f)] = 1;
+      }
+    }
+  for(std::size_t q = 0; q < queue.size(); ++q, ++count)
+    for(auto h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
+      const auto o = opposite(h, tm);
+      if(is_border(o, tm)) continue;
+      const std::size_t g = get(fim, face(o, tm));
+      if(!seen[g] && label[g] == k) {
+        seen[g] = 1;
+        queue.push_back(face(o, tm));
+      }
+    }
+  return total > 0 && count == total;
+}
+
+// a point with a constructor from three coordinates
+struct Xyz
+{
+  double x, y, z;
+  Xyz(double a = 0, double b = 0, double c = 0) : x(a), y(b), z(c) {}
+};
+
+// a writable vertex point map that stores points in a vector by vertex index
+template <class VIM>
+struct Vector_point_map
+{
+  typedef typename boost::property_traits<VIM>::key_type key_type;
+  typedef Xyz value_type;
+  typedef Xyz reference;
+  typedef boost::writable_property_map_tag category;
+  std::vector<std::array<double, 3>>* data;
+  VIM vim;
+  friend void put(const Vector_point_map& m, const key_type& k, const Xyz& p) { (*m.data)[get(m.vim, k)] = {p.x, p.y, p.z}; }
+};
+
+// writes points stored by vertex index into a point map, or nothing when no map was given
+template <class TriangleMesh, class VIM>
+void write_points(const TriangleMesh&, const std::vector<std::array<double, 3>>&, const VIM&, CGAL::internal_np::Param_not_found)
+{}
+
+template <class TriangleMesh, class VIM, class PointMap>
+void write_points(const TriangleMesh& tm, const std::vector<std::array<double, 3>>& points, const VIM& vim, PointMap out)
+{
+  typedef typename boost::property_traits<PointMap>::value_type Point;
+  for(auto v : vertices(tm)) {
+    const std::array<double, 3>& p = points[get(vim, v)];
+    put(out, v, Point(p[0], p[1], p[2]));
+  }
+}
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_INTERNAL_CHARTS_H

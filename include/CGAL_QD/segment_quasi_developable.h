@@ -1,0 +1,242 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_SEGMENT_QUASI_DEVELOPABLE_H
+#define CGAL_QD_SEGMENT_QUASI_DEVELOPABLE_H
+
+/// \file segment_quasi_developable.h
+/// The quasi-developable segmentation of the paper, Section 2: error-controlled
+/// VSA, minimum-cut boundary refinement, optional least-squares boundary
+/// denoising and LPFB-based boundary merging, then the LPFB+IP flattening of
+/// every final chart.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/boundary_denoising.h>
+#include <CGAL_QD/boundary_refinement.h>
+#include <CGAL_QD/chart_merging.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/vsa_segmentation.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <iostream>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// everything `segment_quasi_developable()` computed.
+template <class TriangleMesh>
+struct Segmentation_result
+{
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+
+  Error_code status = Error_code::OK;
+  std::size_t number_of_faces = 0;
+  std::size_t charts_after_vsa = 0;
+  std::size_t charts_after_refinement = 0;
+  /// charts after splitting those beyond the thresholds, before merging
+  std::size_t charts_before_merging = 0;
+  std::size_t number_of_charts = 0;  ///< final
+
+  Vsa_result vsa;
+  Refinement_result refinement;  ///< empty when the step was switched off
+  Denoising_result denoising;    ///< empty when the step was switched off
+  Merging_result<TriangleMesh> merging;
+
+  /// per final chart, in chart id order: the LPFB+IP flattening of the chart cut open along `seam_edges`
+  std::vector<Chart_report> charts;
+  double max_area_distortion = 0;  ///< over the final charts, in percent
+  double max_l2_stretch = 0;       ///< over the final charts
+  std::size_t overlapping_charts = 0;
+  std::size_t rejected_charts = 0;  ///< final charts beyond the thresholds (0 unless merging was switched off)
+
+  /// the edges where the surface is cut: between two charts, or curves left inside a chart
+  std::vector<edge_descriptor> seam_edges;
+  double seam_length = 0;
+
+  /// the UV of every corner in its chart's flattening: `corner_uv[3 i + k]` is
+  /// the UV of the target of the k-th halfedge of the face of index i, starting
+  /// at `halfedge(f, tm)`. Each chart has its own frame, in the units of the mesh.
+  std::vector<std::array<double, 2>> corner_uv;
+  /// the point of every vertex (by vertex index) that the flattening used: the
+  /// denoised positions when the denoising ran, the input positions otherwise
+  std::vector<std::array<double, 3>> points;
+
+  double time_vsa_ms = 0, time_refine_ms = 0, time_denoise_ms = 0, time_merge_ms = 0, time_flatten_ms = 0,
+         time_total_ms = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// segments `tm` into charts that each flatten by LPFB+IP within the
+/// distortion thresholds and without overlap (paper Section 2):
+/// 1. `segment_by_error_controlled_vsa()`: nearly planar charts;
+/// 2. `refine_chart_boundaries()`: minimum-cut borders (named parameter `refine_boundaries`, default on);
+/// 3. `denoise_chart_boundaries()` on a copy of the points (`denoise_boundaries`, default off);
+/// 4. `merge_charts_by_boundaries()` (`merge_charts`, default on), which first splits the
+///    charts beyond the thresholds;
+/// 5. the LPFB+IP flattening of every final chart cut open along the seams, kept in
+///    `Segmentation_result::corner_uv`.
+///
+/// The mesh may be closed, have borders, several connected components or
+/// handles: the charts are disks with holes, and the seams open the rest.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag` (the trials of the merging and the final
+///         flattenings run in parallel with TBB; the result is the same)
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam FaceChartMap a model of `WritablePropertyMap` from faces to an integral type; receives a
+///         chart id in `[0, n)` per face
+/// \param np optional named parameters: those of the steps (`CGAL_QD::parameters::vsa_tolerance`,
+///   `max_number_of_proxies`, `number_of_relaxations`, `CGAL_QD::parameters::refinement_band_width`,
+///   `CGAL_QD::parameters::denoising_iterations`, `CGAL_QD::parameters::max_area_distortion`,
+///   `CGAL_QD::parameters::max_l2_stretch`, `CGAL_QD::parameters::overlap_tolerance`), the switches `CGAL_QD::parameters::refine_boundaries`,
+///   `CGAL_QD::parameters::denoise_boundaries`, `CGAL_QD::parameters::merge_charts`,
+///   `CGAL_QD::parameters::denoised_point_map` (receives the denoised points), `callback` (called with a
+///   step name, "vsa", "refine", "denoise", "split", "merge" or "flatten", and the fraction done), `verbose`
+///   (a line per step and per trial on `std::cerr`), and `vertex_point_map`, `vertex_index_map`,
+///   `face_index_map`, `halfedge_index_map`.
+/// \returns a `Segmentation_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES` or
+///          `DEGENERATE_FACE` on invalid input, in which case nothing is written.
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& tm, FaceChartMap face_chart,
+                                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  const auto start = std::chrono::steady_clock::now();
+  Segmentation_result<TriangleMesh> result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  const bool refine = choose_parameter(get_parameter(np, internal_np::refine_boundaries_t()), true);
+  const bool denoise = choose_parameter(get_parameter(np, internal_np::denoise_boundaries_t()), false);
+  const bool merge = choose_parameter(get_parameter(np, internal_np::merge_charts_t()), true);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const std::function<void(const char*, double)> progress =
+      choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
+  typedef typename std::remove_const<decltype(fim)>::type FIM;
+  typedef typename std::remove_const<decltype(him)>::type HIM;
+  typedef typename std::remove_const<decltype(vim)>::type VIM;
+
+  result.status = internal::validate_mesh_to_segment(tm, vpm);
+  if(result.status != Error_code::OK) return result;
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  result.number_of_faces = nf;
+  std::vector<std::size_t> chart(nf, 0);
+  const internal::Indexed_face_writer<face_descriptor, FIM> chart_map{&chart, fim};
+
+  // 1. error-controlled VSA
+  if(progress) progress("vsa", 0.);
+  result.vsa = segment_by_error_controlled_vsa(tm, chart_map, np);
+  result.time_vsa_ms = result.vsa.time_ms;
+  result.charts_after_vsa = result.charts_after_refinement = result.vsa.number_of_charts;
+  if(verbose) std::cerr << "VSA: " << result.charts_after_vsa << " charts in " << result.time_vsa_ms << " ms\n";
+
+  // 2. minimum-cut refinement
+  if(refine) {
+    if(progress) progress("refine", 0.);
+    result.refinement = refine_chart_boundaries(tm, chart_map, np);
+    result.time_refine_ms = result.refinement.time_ms;
+    result.charts_after_refinement = result.refinement.number_of_charts;
+    if(verbose)
+      std::cerr << "refinement: " << result.refinement.pairs_refined << " borders moved, "
+                << result.refinement.pairs_kept << " kept, cost " << result.refinement.border_cost_before << " -> "
+                << result.refinement.border_cost_after << " in " << result.time_refine_ms << " ms\n";
+  }
+
+  // 3. denoising, on a copy of the points
+  result.points = internal::points_by_index(tm, vpm, vim);
+  if(denoise) {
+    if(progress) progress("denoise", 0.);
+    internal::Vector_point_map<VIM> copy{&result.points, vim};
+    result.denoising = denoise_chart_boundaries(tm, chart_map, copy, np);
+    result.time_denoise_ms = result.denoising.time_ms;
+    if(verbose)
+      std::cerr << "denoising: " << result.denoising.number_of_border_vertices << " vertices, largest move "
+                << result.denoising.max_displacement << " in " << result.time_denoise_ms << " ms\n";
+  }
+
+  // 4. splitting and merging
+  auto t = std::chrono::steady_clock::now();
+  const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
+  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points,
+                                                              internal::merge_thresholds_from<TriangleMesh>(np));
+  internal::Boundary_merger<TriangleMesh, FIM, HIM, VIM> merger(tm, fim, him, evaluator, chart,
+                                                                result.charts_after_refinement, result.points, vim);
+  result.merging.charts_before = result.charts_after_refinement;
+  result.merging.charts_split = merger.template split_failing_charts<ConcurrencyTag>(geo, progress);
+  result.merging.time_split_ms = internal::milliseconds_since(t);
+  result.charts_before_merging = result.charts_after_refinement + result.merging.charts_split;
+  merger.build_curves();
+  result.merging.boundary_curves = merger.number_of_curves();
+  if(progress && merge) progress("merge", 0.);
+  std::tie(result.merging.trials, result.merging.merges) =
+      merger.template merge<ConcurrencyTag>(geo, progress, verbose, merge);
+  result.number_of_charts = result.merging.number_of_charts = merger.number_of_final_charts();
+  result.seam_length = result.merging.seam_length = merger.seams(std::back_inserter(result.merging.seam_edges));
+  result.seam_edges = result.merging.seam_edges;
+  result.merging.time_ms = result.time_merge_ms = internal::milliseconds_since(t);
+  if(verbose)
+    std::cerr << "merging: " << result.charts_before_merging << " charts (" << result.merging.charts_split
+              << " from splitting) -> " << result.number_of_charts << ", " << result.merging.trials << " trials, "
+              << result.merging.merges << " merges in " << result.time_merge_ms << " ms\n";
+
+  // 5. the flattening of every final chart
+  t = std::chrono::steady_clock::now();
+  if(progress) progress("flatten", 0.);
+  const std::size_t n = result.number_of_charts;
+  std::vector<std::vector<face_descriptor>> members(n);
+  for(face_descriptor f : faces(tm)) members[chart[get(fim, f)]].push_back(f);
+  for(auto& m : members)
+    std::sort(m.begin(), m.end(), [&](face_descriptor x, face_descriptor y) { return get(fim, x) < get(fim, y); });
+  result.charts.resize(n);
+  std::vector<std::vector<std::array<double, 2>>> uvs(n);
+  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t k) {
+    result.charts[k] = evaluator.evaluate(members[k], [&](halfedge_descriptor h) { return merger.is_seam(h); }, &uvs[k]);
+  });
+  result.corner_uv.assign(3 * nf, {0., 0.});
+  for(std::size_t k = 0; k < n; ++k) {
+    const Chart_report& c = result.charts[k];
+    result.max_area_distortion = (std::max)(result.max_area_distortion, c.area_distortion);
+    result.max_l2_stretch = (std::max)(result.max_l2_stretch, c.l2_stretch);
+    if(c.overlap) ++result.overlapping_charts;
+    if(!c.accepted) ++result.rejected_charts;
+    for(std::size_t i = 0; i < members[k].size() && !uvs[k].empty(); ++i)
+      for(int j = 0; j < 3; ++j) result.corner_uv[3 * get(fim, members[k][i]) + j] = uvs[k][3 * i + j];
+  }
+  result.time_flatten_ms = internal::milliseconds_since(t);
+  if(verbose)
+    std::cerr << "flattening: " << n << " charts, max A " << result.max_area_distortion << " %, max L2 "
+              << result.max_l2_stretch << ", " << result.overlapping_charts << " overlapping, in "
+              << result.time_flatten_ms << " ms\n";
+
+  typedef typename boost::property_traits<FaceChartMap>::value_type Id;
+  for(face_descriptor f : faces(tm)) put(face_chart, f, static_cast<Id>(chart[get(fim, f)]));
+  if(denoise) internal::write_points(tm, result.points, vim, get_parameter(np, internal_np::denoised_point_map_t()));
+  if(progress) progress("flatten", 1.);
+  result.time_total_ms = internal::milliseconds_since(start);
+  return result;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_SEGMENT_QUASI_DEVELOPABLE_H

@@ -1,0 +1,607 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#define BOOST_TEST_MODULE segmentation
+#include <boost/test/unit_test.hpp>
+#include <boost/mpl/list.hpp>
+
+#include "mesh_generators.h"
+#include "test_utils.h"
+
+#include <CGAL_QD/extract_chart.h>
+#include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/vsa_segmentation.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cmath>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace QD = CGAL_QD;
+using namespace qd_test;
+
+typedef boost::mpl::list<Surface_mesh, Polyhedron> Mesh_types;
+
+namespace {
+
+template <class Mesh>
+using Chart_map = std::map<typename boost::graph_traits<Mesh>::face_descriptor, std::size_t>;
+
+// every face has a chart in [0, n), every chart is non-empty and connected
+template <class Mesh>
+void expect_valid_charts(const Mesh& tm, const Chart_map<Mesh>& chart, std::size_t n)
+{
+  BOOST_REQUIRE(chart.size() == num_faces(tm));
+  std::vector<std::size_t> size(n, 0), reached(n, 0);
+  for(const auto& fc : chart) {
+    BOOST_REQUIRE(fc.second < n);
+    ++size[fc.second];
+  }
+  for(std::size_t k = 0; k < n; ++k) BOOST_TEST(size[k] > 0u);
+  std::set<typename boost::graph_traits<Mesh>::face_descriptor> seen;
+  for(const auto& fc : chart) {
+    if(reached[fc.second]) continue;  // BFS once per chart, from its first face
+    std::vector<typename boost::graph_traits<Mesh>::face_descriptor> queue{fc.first};
+    seen.insert(fc.first);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(auto h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
+        auto o = opposite(h, tm);
+        if(is_border(o, tm)) continue;
+        auto g = face(o, tm);
+        if(chart.at(g) == fc.second && seen.insert(g).second) queue.push_back(g);
+      }
+    reached[fc.second] = queue.size();
+    BOOST_TEST(queue.size() == size[fc.second]);  // connected
+  }
+}
+
+Soup closed_cube(std::size_t n)
+{
+  // the opened cube with every cut sewn back
+  Soup s = cube_opened_by_five_cuts(n);
+  return merge_coincident_points(s);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(cube_gives_its_six_sides, Mesh, Mesh_types)
+{
+  const Mesh tm = make<Mesh>(closed_cube(6));
+  Chart_map<Mesh> chart;
+  const auto r = QD::segment_by_error_controlled_vsa(tm, boost::make_assoc_property_map(chart),
+                                                     QD::parameters::vsa_tolerance(0.01));
+  BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+  BOOST_TEST(r.number_of_charts == 6u);
+  BOOST_TEST(r.tolerance_reached);
+  BOOST_TEST(r.max_chart_error < 1e-12);
+  expect_valid_charts(tm, chart, r.number_of_charts);
+  // each side is one chart
+  for(const auto& fc : chart) BOOST_TEST(std::abs(r.chart_area[fc.second] - 1.0) < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(curved_tube_meets_the_tolerance_and_is_deterministic)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(48, 12, cylinder(1.0, 1.9 * pi, 3.0)));
+  for(double tol : {0.02, 0.1}) {
+    Chart_map<Surface_mesh> a, b;
+    const auto np = QD::parameters::vsa_tolerance(tol, CGAL::parameters::max_number_of_proxies(500));
+    const auto ra = QD::segment_by_error_controlled_vsa(tm, boost::make_assoc_property_map(a), np);
+    const auto rb = QD::segment_by_error_controlled_vsa(tm, boost::make_assoc_property_map(b), np);
+    BOOST_REQUIRE(ra);
+    BOOST_TEST(ra.tolerance_reached);
+    BOOST_TEST(ra.max_chart_error <= tol);
+    for(double e : ra.chart_error) BOOST_TEST(e <= tol);
+    BOOST_TEST(ra.number_of_charts > 1u);
+    expect_valid_charts(tm, a, ra.number_of_charts);
+    BOOST_TEST((a == b));  // the same input gives the same output
+    BOOST_TEST(ra.number_of_charts == rb.number_of_charts);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(several_components_and_a_handle)
+{
+  // two cubes, then a torus: the segmentation opens any topology
+  Soup s = closed_cube(4);
+  Soup t = closed_cube(4);
+  const std::size_t off = s.points.size();
+  for(P3 p : t.points) s.points.push_back({p[0] + 3, p[1], p[2]});
+  for(Tri f : t.triangles) s.triangles.push_back({f[0] + off, f[1] + off, f[2] + off});
+  const Surface_mesh two = make<Surface_mesh>(s);
+  Chart_map<Surface_mesh> chart;
+  const auto r = QD::segment_by_error_controlled_vsa(
+      two, boost::make_assoc_property_map(chart),
+      QD::parameters::vsa_tolerance(0.01, CGAL::parameters::max_number_of_proxies(100)));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_charts == 12u);
+  expect_valid_charts(two, chart, r.number_of_charts);
+
+  const Surface_mesh tm = make<Surface_mesh>(torus(24, 12));
+  Chart_map<Surface_mesh> tc;
+  const auto rt = QD::segment_by_error_controlled_vsa(
+      tm, boost::make_assoc_property_map(tc), QD::parameters::vsa_tolerance(0.1, CGAL::parameters::max_number_of_proxies(200)));
+  BOOST_REQUIRE(rt);
+  BOOST_TEST(rt.tolerance_reached);
+  expect_valid_charts(tm, tc, rt.number_of_charts);
+}
+
+BOOST_AUTO_TEST_CASE(proxy_cap_is_reported)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(48, 12, cylinder(1.0, 1.9 * pi, 3.0)));
+  Chart_map<Surface_mesh> chart;
+  const auto r = QD::segment_by_error_controlled_vsa(
+      tm, boost::make_assoc_property_map(chart),
+      QD::parameters::vsa_tolerance(1e-6, CGAL::parameters::max_number_of_proxies(4)));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(!r.tolerance_reached);
+  BOOST_TEST(r.number_of_charts <= 4u);
+  expect_valid_charts(tm, chart, r.number_of_charts);
+}
+
+BOOST_AUTO_TEST_CASE(invalid_input_writes_nothing)
+{
+  Chart_map<Surface_mesh> chart;
+  const Surface_mesh empty;
+  BOOST_TEST((QD::segment_by_error_controlled_vsa(empty, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::EMPTY_MESH));
+  Soup s = grid(4, 4, bump(0.2));
+  s.points[6][0] = std::numeric_limits<double>::infinity();
+  const Surface_mesh bad = make<Surface_mesh>(s);
+  BOOST_TEST((QD::segment_by_error_controlled_vsa(bad, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::INVALID_COORDINATES));
+  Soup d = grid(4, 4, [](double u, double v) { return P3{u, v, 0}; });
+  d.points[6] = d.points[1];
+  const Surface_mesh degenerate = make<Surface_mesh>(d);
+  BOOST_TEST((QD::segment_by_error_controlled_vsa(degenerate, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::DEGENERATE_FACE));
+  BOOST_TEST(chart.empty());
+}
+
+#ifdef CGAL_QD_DEMO_MESH_DIR
+BOOST_AUTO_TEST_CASE(real_meshes)
+{
+  for(const char* name : {"fandisk.off", "bunny00.off"}) {
+    Surface_mesh tm;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/" + name, tm));
+    Chart_map<Surface_mesh> chart;
+    const auto r = QD::segment_by_error_controlled_vsa(tm, boost::make_assoc_property_map(chart));
+    BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+    BOOST_TEST_MESSAGE(name << ": " << num_faces(tm) << " faces, " << r.number_of_charts << " charts, max error "
+                            << r.max_chart_error << ", " << r.time_ms << " ms");
+    BOOST_TEST(r.tolerance_reached);
+    BOOST_TEST(r.number_of_charts >= 10u);  // tens of charts, as in the paper
+    BOOST_TEST(r.number_of_charts <= 100u);
+    expect_valid_charts(tm, chart, r.number_of_charts);
+  }
+}
+#endif
+
+// ===================================================================== steps 2 to 5
+
+namespace {
+
+// two planes meeting at a valley along x = 0: z = 0.8 |x|, x in [-1, 1], y in [0, 1]
+Soup folded_sheet(std::size_t n)
+{
+  return grid(n, n, [](double u, double v) {
+    const double x = 2 * u - 1;
+    return P3{x, v, 0.8 * std::abs(x)};
+  });
+}
+
+template <class Mesh>
+std::array<double, 3> centroid(const Mesh& tm, typename boost::graph_traits<Mesh>::face_descriptor f)
+{
+  std::array<double, 3> c = {0, 0, 0};
+  for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+    for(int k = 0; k < 3; ++k) c[k] += p3(tm, v)[k] / 3;
+  return c;
+}
+
+template <class Mesh>
+std::size_t count_border_loops(const Mesh& tm)
+{
+  std::set<typename boost::graph_traits<Mesh>::halfedge_descriptor> seen;
+  std::size_t loops = 0;
+  for(auto h : halfedges(tm))
+    if(is_border(h, tm) && seen.insert(h).second) {
+      ++loops;
+      for(auto g : CGAL::halfedges_around_face(h, tm)) seen.insert(g);
+    }
+  return loops;
+}
+
+// The whole result, checked through the public API only: every face has one
+// chart, charts are connected, and every chart, extracted with the seams as
+// cuts, flattens by flatten_patch() within the thresholds and without overlap.
+template <class Mesh>
+void expect_valid_segmentation(const Mesh& tm, const Chart_map<Mesh>& chart,
+                               const QD::Segmentation_result<Mesh>& r, double max_area = 10., double max_l2 = 2.)
+{
+  typedef typename boost::graph_traits<Mesh>::edge_descriptor edge_descriptor;
+  expect_valid_charts(tm, chart, r.number_of_charts);
+  BOOST_TEST(r.charts.size() == r.number_of_charts);
+  BOOST_TEST(r.number_of_charts <= r.charts_before_merging);  // merging never adds charts
+  BOOST_TEST(r.charts_after_refinement == r.charts_after_vsa);  // the min cut never empties a chart
+  BOOST_TEST(r.overlapping_charts == 0u);
+  BOOST_TEST(r.rejected_charts == 0u);
+  BOOST_TEST(r.max_area_distortion <= max_area);
+  BOOST_TEST(r.max_l2_stretch <= max_l2);
+  std::map<edge_descriptor, bool> seam;
+  double seam_length = 0;
+  for(edge_descriptor e : r.seam_edges) {
+    seam[e] = true;
+    seam_length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(CGAL::vertex_point, tm, source(e, tm)),
+                                                                      get(CGAL::vertex_point, tm, target(e, tm)))));
+  }
+  BOOST_TEST(std::abs(seam_length - r.seam_length) <= 1e-9 * (1 + seam_length));
+  // every edge between two charts is a seam
+  for(auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    if(!is_border_edge(h, tm) && chart.at(face(h, tm)) != chart.at(face(opposite(h, tm), tm)))
+      BOOST_TEST(seam.count(e) == 1u);
+  }
+  for(std::size_t k = 0; k < r.number_of_charts; ++k) {
+    Surface_mesh piece;
+    const QD::Error_code ec = QD::extract_chart(
+        tm, boost::make_assoc_property_map(chart), k, piece,
+        CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(seam)));
+    BOOST_REQUIRE(ec == QD::Error_code::OK);
+    BOOST_TEST(num_faces(piece) == r.charts[k].number_of_faces);
+    Uv_store<Surface_mesh> uv;
+    const QD::Flattening_result f = QD::flatten_patch(piece, uv.pmap());
+    BOOST_REQUIRE_MESSAGE(f, "chart " << k << ": " << QD::error_message(f.status));
+    const auto d = QD::compute_distortion(piece, uv.pmap_const(), QD::parameters::overlap_tolerance(1e-9));
+    BOOST_TEST(d.area_distortion <= max_area);
+    BOOST_TEST(d.l2_stretch <= max_l2);
+    BOOST_TEST(!d.overlap);
+    BOOST_TEST(std::abs(d.area_distortion - r.charts[k].area_distortion) <= 1e-6 * (1 + d.area_distortion));
+  }
+  // the kept UVs: on every seam, the 2D length of each side is the 3D length (LPFB keeps border lengths)
+  auto fim = CGAL::get_initialized_face_index_map(tm);
+  double worst = 0;
+  for(auto f : faces(tm)) {
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      // corner k is target(h); the edge of next(h) runs from corner k to corner k + 1
+      const auto g = next(h, tm);
+      // (the associative map inserted false for every edge extract_chart() looked up)
+      const auto it = seam.find(edge(g, tm));
+      if((it != seam.end() && it->second) || is_border(opposite(g, tm), tm)) {
+        const auto& a = r.corner_uv[3 * get(fim, f) + k];
+        const auto& b = r.corner_uv[3 * get(fim, f) + (k + 1) % 3];
+        const double l2d = std::hypot(a[0] - b[0], a[1] - b[1]);
+        const double l3d = std::sqrt(CGAL::to_double(
+            CGAL::squared_distance(get(CGAL::vertex_point, tm, source(g, tm)), get(CGAL::vertex_point, tm, target(g, tm)))));
+        worst = (std::max)(worst, std::abs(l2d - l3d) / l3d);
+      }
+      ++k;
+    }
+  }
+  BOOST_TEST(worst < 1e-7);
+}
+
+Soup closed_tube(std::size_t n, std::size_t m)
+{
+  return merge_coincident_points(grid(n, m, cylinder(1.0, 2 * pi, 3.0)));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(extract_chart_cuts_seams_slits_and_pinches)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(6, 6, bump(0.2)));
+  typedef Surface_mesh::Face_index F;
+  typedef Surface_mesh::Vertex_index V;
+  typedef Surface_mesh::Edge_index E;
+  Chart_map<Surface_mesh> chart;
+  for(F f : faces(tm)) chart[f] = centroid(tm, f)[0] < 0.5 ? 0 : 1;
+  std::vector<std::pair<V, V>> v2v;
+  std::vector<std::pair<F, F>> f2f;
+  Surface_mesh out;
+  BOOST_REQUIRE(QD::extract_chart(tm, boost::make_assoc_property_map(chart), 0, out,
+                                  CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
+                                      .face_to_face_output_iterator(std::back_inserter(f2f))) == QD::Error_code::OK);
+  std::set<V> used;
+  std::size_t n0 = 0;
+  for(F f : faces(tm))
+    if(chart[f] == 0) {
+      ++n0;
+      for(V v : CGAL::vertices_around_face(halfedge(f, tm), tm)) used.insert(v);
+    }
+  BOOST_TEST(num_faces(out) == n0);
+  BOOST_TEST(num_vertices(out) == used.size());
+  BOOST_TEST(v2v.size() == num_vertices(out));
+  BOOST_TEST(f2f.size() == n0);
+  for(const auto& p : v2v) BOOST_TEST(p3(tm, p.first) == p3(out, p.second));
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(out));
+  BOOST_TEST(count_border_loops(out) == 1u);
+
+  // a slit: two interior edges a-b-c cut open; b is doubled and the slit is a second border loop
+  Chart_map<Surface_mesh> all;
+  for(F f : faces(tm)) all[f] = 7;
+  std::map<E, bool> cut;
+  V b;
+  for(V v : vertices(tm))
+    if(std::abs(p3(tm, v)[0] - 0.5) < 1e-9 && std::abs(p3(tm, v)[1] - 0.5) < 1e-9) b = v;
+  std::size_t marked = 0;
+  for(auto h : CGAL::halfedges_around_target(b, tm)) {
+    const auto q = p3(tm, source(h, tm));
+    if(std::abs(q[1] - 0.5) < 1e-9 && marked < 2) {  // the two edges along y = 0.5
+      cut[edge(h, tm)] = true;
+      ++marked;
+    }
+  }
+  BOOST_REQUIRE(marked == 2u);
+  BOOST_REQUIRE(QD::extract_chart(tm, boost::make_assoc_property_map(all), 7, out,
+                                  CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(cut))) ==
+                QD::Error_code::OK);
+  BOOST_TEST(num_vertices(out) == num_vertices(tm) + 1);
+  BOOST_TEST(count_border_loops(out) == 2u);
+  Uv_store<Surface_mesh> uv;
+  BOOST_TEST(bool(QD::flatten_patch(out, uv.pmap())));  // a disk with a hole: flattens
+
+  // a chart touching itself at a vertex gives two vertices there
+  Chart_map<Surface_mesh> pinch;
+  std::vector<F> around;
+  for(auto h : CGAL::halfedges_around_target(b, tm)) around.push_back(face(h, tm));
+  for(F f : faces(tm)) pinch[f] = 1;
+  pinch[around[0]] = pinch[around[3]] = 0;  // opposite faces of the fan of b share only b
+  BOOST_REQUIRE(QD::extract_chart(tm, boost::make_assoc_property_map(pinch), 0, out) == QD::Error_code::OK);
+  BOOST_TEST(num_faces(out) == 2u);
+  BOOST_TEST(num_vertices(out) == 6u);
+  BOOST_TEST((QD::extract_chart(tm, boost::make_assoc_property_map(pinch), 5, out) == QD::Error_code::EMPTY_MESH));
+  BOOST_TEST(num_faces(out) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(min_cut_moves_a_zigzag_border_onto_the_crease)
+{
+  const Surface_mesh tm = make<Surface_mesh>(folded_sheet(40));
+  typedef Surface_mesh::Face_index F;
+  Chart_map<Surface_mesh> chart;
+  auto truth = [&](F f) { return centroid(tm, f)[0] < 0 ? std::size_t(3) : std::size_t(8); };
+  std::size_t wrong_before = 0, wrong_after = 0;
+  for(F f : faces(tm)) {
+    const auto c = centroid(tm, f);
+    chart[f] = c[0] < 0.12 * std::sin(6 * pi * c[1]) ? 3 : 8;  // ids need not be 0..n-1
+    wrong_before += chart[f] != truth(f);
+  }
+  // a single-face chart inside chart 8 must survive
+  F lonely;
+  for(F f : faces(tm)) {
+    const auto c = centroid(tm, f);
+    if(c[0] > 0.6 && c[0] < 0.7 && c[1] > 0.5 && c[1] < 0.55) lonely = f;
+  }
+  chart[lonely] = 5;
+  const QD::Refinement_result r = QD::refine_chart_boundaries(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_charts == 3u);
+  BOOST_TEST(r.border_cost_after < r.border_cost_before);
+  BOOST_TEST(r.faces_moved > 0u);
+  BOOST_TEST(chart[lonely] == 5u);
+  for(F f : faces(tm))
+    if(f != lonely) wrong_after += chart[f] != truth(f);
+  BOOST_TEST_MESSAGE("zigzag: " << wrong_before << " faces off the crease before, " << wrong_after << " after");
+  BOOST_TEST(wrong_before > 50u);
+  BOOST_TEST(wrong_after == 0u);
+  // only the given ids are used, and every chart is connected
+  Chart_map<Surface_mesh> compact;
+  for(F f : faces(tm)) {
+    BOOST_TEST((chart[f] == 3u || chart[f] == 5u || chart[f] == 8u));
+    compact[f] = chart[f] == 3 ? 0 : (chart[f] == 5 ? 1 : 2);
+  }
+  expect_valid_charts(tm, compact, 3);
+}
+
+BOOST_AUTO_TEST_CASE(denoising_pulls_noisy_crease_vertices_onto_the_crease)
+{
+  Soup s = folded_sheet(20);
+  unsigned seed = 12345;
+  auto noise = [&]() {
+    seed = seed * 1103515245u + 12345u;
+    return ((seed >> 8) % 2001) / 1000.0 - 1.0;
+  };
+  std::vector<std::size_t> crease;
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+    if(std::abs(s.points[i][0]) < 1e-12 && s.points[i][1] > 1e-9 && s.points[i][1] < 1 - 1e-9) {
+      s.points[i][0] += 0.01 * noise();
+      s.points[i][2] += 0.02 * noise();
+      crease.push_back(i);
+    }
+  BOOST_REQUIRE(crease.size() > 10u);
+  Surface_mesh tm = make<Surface_mesh>(s);
+  Chart_map<Surface_mesh> chart;
+  for(auto f : faces(tm)) chart[f] = centroid(tm, f)[0] < 0 ? 0 : 1;
+  // distance of a point to the crease line x = 0, z = 0
+  auto off_crease = [](const std::array<double, 3>& p) { return std::hypot(p[0], p[2]); };
+  std::vector<Surface_mesh::Vertex_index> vs(vertices(tm).begin(), vertices(tm).end());
+  double before = 0;
+  for(std::size_t i : crease) before = (std::max)(before, off_crease(p3(tm, vs[i])));
+
+  std::map<Surface_mesh::Vertex_index, Epick::Point_3> moved;
+  const Surface_mesh copy = tm;
+  const QD::Denoising_result r = QD::denoise_chart_boundaries(tm, boost::make_assoc_property_map(chart),
+                                                              boost::make_assoc_property_map(moved),
+                                                              QD::parameters::denoising_iterations(40));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_border_vertices == crease.size() + 2);  // and the two ends on the mesh border
+  for(auto v : vertices(tm)) BOOST_TEST(p3(tm, v) == p3(copy, v));  // the mesh did not change
+  double after = 0;
+  for(std::size_t i : crease) {
+    const Epick::Point_3& p = moved.at(vs[i]);
+    after = (std::max)(after, off_crease({p.x(), p.y(), p.z()}));
+  }
+  BOOST_TEST_MESSAGE("denoising: crease vertices at most " << before << " off the crease before, " << after
+                                                           << " after, " << r.rejected_moves << " moves undone");
+  BOOST_TEST(after < 0.25 * before);
+  // into the mesh's own point map: the mesh changes
+  BOOST_REQUIRE(bool(QD::denoise_chart_boundaries(tm, boost::make_assoc_property_map(chart), get(CGAL::vertex_point, tm),
+                                                  QD::parameters::denoising_iterations(40))));
+  for(std::size_t i : crease) BOOST_TEST(p3(tm, vs[i])[2] == moved.at(vs[i]).z());
+}
+
+BOOST_AUTO_TEST_CASE(tube_merges_into_very_few_charts)
+{
+  const Surface_mesh tm = make<Surface_mesh>(closed_tube(48, 12));
+  Chart_map<Surface_mesh> chart;
+  for(auto f : faces(tm)) {
+    const auto c = centroid(tm, f);
+    const double a = std::atan2(c[1], c[0]) + pi;
+    chart[f] = std::min<std::size_t>(7, std::size_t(a / (2 * pi) * 8)) + (c[2] < 1.5 ? 0 : 8);
+  }
+  const auto r = QD::merge_charts_by_boundaries<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.charts_before == 16u);
+  BOOST_TEST(r.charts_split == 0u);
+  BOOST_TEST_MESSAGE("tube: 16 charts -> " << r.number_of_charts << " in " << r.trials << " trials");
+  BOOST_TEST(r.number_of_charts <= 2u);
+  BOOST_TEST(r.merges >= 14u);
+  expect_valid_charts(tm, chart, r.number_of_charts);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(cube_unfolds_into_few_charts, Mesh, Mesh_types)
+{
+  const Mesh tm = make<Mesh>(closed_cube(4));
+  Chart_map<Mesh> chart;
+  const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+  BOOST_TEST_MESSAGE("cube: " << r.charts_after_vsa << " VSA charts -> " << r.number_of_charts);
+  BOOST_TEST(r.number_of_charts <= 2u);
+  BOOST_TEST(r.max_area_distortion < 1e-6);  // the cube's net is exact
+  expect_valid_segmentation(tm, chart, r);
+}
+
+BOOST_AUTO_TEST_CASE(closed_surfaces_of_any_topology_and_components)
+{
+  // two cubes and a torus in one mesh
+  Soup s = closed_cube(4);
+  const Soup t = torus(32, 16);
+  const std::size_t off = s.points.size();
+  for(P3 p : t.points) s.points.push_back({p[0] + 5, p[1], p[2]});
+  for(Tri f : t.triangles) s.triangles.push_back({f[0] + off, f[1] + off, f[2] + off});
+  const Soup u = closed_cube(3);
+  const std::size_t off2 = s.points.size();
+  for(P3 p : u.points) s.points.push_back({p[0], p[1] + 4, p[2]});
+  for(Tri f : u.triangles) s.triangles.push_back({f[0] + off2, f[1] + off2, f[2] + off2});
+  const Surface_mesh tm = make<Surface_mesh>(s);
+  Chart_map<Surface_mesh> chart;
+  const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+  BOOST_TEST_MESSAGE("cubes and torus: " << r.charts_after_vsa << " -> " << r.charts_before_merging << " -> "
+                                         << r.number_of_charts << " charts, " << r.merging.trials << " trials");
+  expect_valid_segmentation(tm, chart, r);
+}
+
+BOOST_AUTO_TEST_CASE(deterministic_and_parallel_equals_sequential)
+{
+#ifdef CGAL_QD_DEMO_MESH_DIR
+  Surface_mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/elephant.off", tm));
+#else
+  const Surface_mesh tm = make<Surface_mesh>(torus(48, 24));
+#endif
+  Chart_map<Surface_mesh> a, b, c;
+  const auto ra = QD::segment_quasi_developable<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(a));
+  const auto rb = QD::segment_quasi_developable<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(b));
+  const auto rc = QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(tm, boost::make_assoc_property_map(c));
+  BOOST_REQUIRE(ra);
+  BOOST_TEST((a == b));
+  BOOST_TEST((a == c));
+  BOOST_TEST(ra.merging.trials == rb.merging.trials);
+  BOOST_TEST(ra.number_of_charts == rc.number_of_charts);
+  BOOST_TEST((ra.corner_uv == rc.corner_uv));
+  BOOST_TEST((ra.seam_edges == rc.seam_edges));
+#ifdef CGAL_LINKED_WITH_TBB
+  BOOST_TEST_MESSAGE("parallel trials: " << ra.time_merge_ms << " ms sequential, " << rc.time_merge_ms << " ms parallel");
+#endif
+  expect_valid_segmentation(tm, a, ra);
+}
+
+BOOST_AUTO_TEST_CASE(steps_can_be_switched_and_thresholds_hold)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(30, 30, bump(0.35)));
+  for(double max_area : {0.02, 0.10}) {
+    Chart_map<Surface_mesh> chart;
+    std::vector<std::string> steps;
+    const auto r = QD::segment_quasi_developable(
+        tm, boost::make_assoc_property_map(chart),
+        QD::parameters::max_area_distortion(
+            max_area, QD::parameters::max_l2_stretch(
+                          1.5, CGAL::parameters::callback([&](const char* step, double) { steps.push_back(step); }))));
+    BOOST_REQUIRE(r);
+    expect_valid_segmentation(tm, chart, r, 100 * max_area, 1.5);
+    BOOST_TEST(steps.front() == "vsa");
+    BOOST_TEST(std::count(steps.begin(), steps.end(), std::string("refine")) == 1);
+    BOOST_TEST(steps.back() == "flatten");
+  }
+  // no merging: the charts are those of VSA and refinement, split only where beyond the thresholds
+  Chart_map<Surface_mesh> chart;
+  const auto r = QD::segment_quasi_developable(
+      tm, boost::make_assoc_property_map(chart),
+      QD::parameters::merge_charts(false, QD::parameters::refine_boundaries(false)));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.merging.trials == 0u);
+  BOOST_TEST(r.time_refine_ms == 0.);
+  BOOST_TEST(r.number_of_charts == r.charts_before_merging);
+  expect_valid_segmentation(tm, chart, r);
+
+  // denoising on request: the caller's mesh keeps its points unless it passes a map
+  std::map<Surface_mesh::Vertex_index, Epick::Point_3> denoised;
+  Chart_map<Surface_mesh> dc;
+  const auto rd = QD::segment_quasi_developable(
+      tm, boost::make_assoc_property_map(dc),
+      QD::parameters::denoise_boundaries(true, QD::parameters::denoised_point_map(boost::make_assoc_property_map(denoised))));
+  BOOST_REQUIRE(rd);
+  BOOST_TEST(rd.denoising.number_of_border_vertices > 0u);
+  BOOST_TEST(denoised.size() == num_vertices(tm));
+  for(auto v : vertices(tm))
+    BOOST_TEST(std::abs(rd.points[v][2] - denoised.at(v).z()) == 0.);
+}
+
+BOOST_AUTO_TEST_CASE(segmentation_rejects_bad_input)
+{
+  Chart_map<Surface_mesh> chart;
+  const Surface_mesh empty;
+  BOOST_TEST((QD::segment_quasi_developable(empty, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::EMPTY_MESH));
+  Soup s = grid(4, 4, bump(0.2));
+  s.points[6][2] = std::numeric_limits<double>::quiet_NaN();
+  const Surface_mesh bad = make<Surface_mesh>(s);
+  BOOST_TEST((QD::segment_quasi_developable(bad, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::INVALID_COORDINATES));
+  BOOST_TEST((QD::refine_chart_boundaries(bad, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::INVALID_COORDINATES));
+  BOOST_TEST((QD::merge_charts_by_boundaries(bad, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::INVALID_COORDINATES));
+  Surface_mesh quad;
+  const auto v0 = quad.add_vertex(Epick::Point_3(0, 0, 0)), v1 = quad.add_vertex(Epick::Point_3(1, 0, 0)),
+             v2 = quad.add_vertex(Epick::Point_3(1, 1, 0)), v3 = quad.add_vertex(Epick::Point_3(0, 1, 0));
+  quad.add_face(v0, v1, v2, v3);
+  BOOST_TEST((QD::segment_quasi_developable(quad, boost::make_assoc_property_map(chart)).status ==
+              QD::Error_code::NOT_TRIANGLE_MESH));
+  BOOST_TEST(chart.empty());
+}
+
+#ifdef CGAL_QD_DEMO_MESH_DIR
+BOOST_AUTO_TEST_CASE(real_meshes_segment_within_the_thresholds)
+{
+  // the paper goes from 16 VSA charts to 5 on fandisk
+  for(const auto& mesh : std::vector<std::pair<std::string, std::size_t>>{{"fandisk.off", 6}, {"cow.off", 60}}) {
+    Surface_mesh tm;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/" + mesh.first, tm));
+    Chart_map<Surface_mesh> chart;
+    const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+    BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+    BOOST_TEST_MESSAGE(mesh.first << ": " << r.charts_after_vsa << " VSA charts -> " << r.charts_before_merging
+                                  << " -> " << r.number_of_charts << ", max A " << r.max_area_distortion
+                                  << " %, max L2 " << r.max_l2_stretch << ", " << r.time_total_ms << " ms");
+    BOOST_TEST(r.number_of_charts <= mesh.second);
+    BOOST_TEST(r.number_of_charts < r.charts_before_merging);
+    expect_valid_segmentation(tm, chart, r);
+  }
+}
+#endif
