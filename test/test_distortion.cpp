@@ -10,8 +10,12 @@
 
 #include <CGAL_QD/distortion.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <set>
+#include <utility>
+#include <vector>
 
 namespace QD = CGAL_QD;
 using namespace qd_test;
@@ -129,6 +133,43 @@ BOOST_AUTO_TEST_CASE(overlap_without_flip_is_detected)
   BOOST_TEST(r.overlap);
   // every reported pair really crosses
   for(const auto& pr : r.border_crossings) BOOST_TEST((pr.first != pr.second));
+  // a real crossing stays one with a tolerance
+  BOOST_TEST(QD::compute_distortion(tm, uv.pmap_const(), QD::parameters::overlap_tolerance(1e-9)).overlap);
+}
+
+BOOST_AUTO_TEST_CASE(sides_of_a_slit_touch_within_the_tolerance)
+{
+  // the flat grid with a slit from its border inwards along y = 0.5: the two
+  // sides of the slit lie on each other in the plane
+  Soup s = flat_grid();
+  std::set<std::pair<std::size_t, std::size_t>> slit;
+  std::vector<std::size_t> on_line;
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+    if(std::abs(s.points[i][1] - 0.5) < 1e-12 && s.points[i][0] < 1.0 + 1e-12) on_line.push_back(i);
+  std::sort(on_line.begin(), on_line.end(), [&](std::size_t a, std::size_t b) { return s.points[a][0] < s.points[b][0]; });
+  for(std::size_t k = 0; k + 1 < on_line.size(); ++k) slit.insert({on_line[k], on_line[k + 1]});
+  BOOST_REQUIRE(slit.size() >= 4u);
+  const Surface_mesh tm = make<Surface_mesh>(cut_open(s, slit));
+  const auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; });
+  const auto exact = QD::compute_distortion(tm, uv.pmap_const());
+  BOOST_TEST(exact.flipped_faces == 0u);
+  BOOST_TEST(exact.overlap);  // exact tests: touching is crossing
+  const auto tolerant = QD::compute_distortion(tm, uv.pmap_const(), QD::parameters::overlap_tolerance(1e-9));
+  BOOST_TEST(tolerant.border_crossings.empty());
+  BOOST_TEST(!tolerant.overlap);
+  BOOST_TEST(!QD::has_global_overlap(tm, uv.pmap_const(), QD::parameters::overlap_tolerance(1e-9)));
+  // pushing the lower side of the slit over the upper side is an overlap again
+  auto folded = uv;
+  for(auto v : vertices(tm)) {
+    const P3 p = p3(tm, v);
+    if(std::abs(p[1] - 0.5) > 1e-12 || p[0] > 1 - 1e-12) continue;
+    bool below = false;
+    for(auto f : CGAL::faces_around_target(halfedge(v, tm), tm))
+      if(f != Surface_mesh::null_face())
+        for(auto w : CGAL::vertices_around_face(halfedge(f, tm), tm)) below = below || p3(tm, w)[1] < 0.5 - 1e-12;
+    if(below) folded.map[v] = Epick::Point_2(p[0], p[1] + 0.05 * (1 - p[0]));
+  }
+  BOOST_TEST(QD::compute_distortion(tm, folded.pmap_const(), QD::parameters::overlap_tolerance(1e-9)).overlap);
 }
 
 BOOST_AUTO_TEST_CASE(branch_vertex_is_detected)

@@ -74,7 +74,9 @@ struct Merging_result
   std::size_t charts_split = 0;
   std::size_t number_of_charts = 0;
   std::size_t boundary_curves = 0;  ///< maximal edge chains between the same two charts, after splitting
-  std::size_t trials = 0;           ///< merged charts flattened and measured
+  /// merged charts flattened and measured; a parallel run also counts the
+  /// speculative trials whose result an earlier acceptance made stale
+  std::size_t trials = 0;
   std::size_t merges = 0;           ///< accepted trials (curves removed)
   /// the edges where the surface is cut: between two charts, or remaining curves inside a chart
   std::vector<edge_descriptor> seam_edges;

@@ -23,6 +23,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -120,6 +121,41 @@ inline double angle_between(const double* u, const double* w, int dim)
     c = std::sqrt(x * x + y * y + z * z);
   }
   return std::atan2(c, dot);
+}
+
+// Whether a face around one of the vertices `a` overlaps a face around one of
+// the vertices `b` in 2D, beyond touching: both faces are shrunk toward their
+// centroids by a relative 1e-6 and then tested exactly.
+template <class TriangleMesh, class VertexUVMap>
+bool fans_overlap(const TriangleMesh& tm, const VertexUVMap& uv,
+                  const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 2>& a,
+                  const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 2>& b)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+  auto fan = [&](const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 2>& vs) {
+    std::vector<face_descriptor> fs;
+    for(auto v : vs)
+      for(face_descriptor f : CGAL::faces_around_target(halfedge(v, tm), tm))
+        if(f != boost::graph_traits<TriangleMesh>::null_face() && std::find(fs.begin(), fs.end(), f) == fs.end())
+          fs.push_back(f);
+    return fs;
+  };
+  auto shrunk = [&](face_descriptor f) {
+    std::array<std::array<double, 2>, 3> q;
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) q[k++] = uv_of(uv, v);
+    const double cx = (q[0][0] + q[1][0] + q[2][0]) / 3, cy = (q[0][1] + q[1][1] + q[2][1]) / 3;
+    const double t = 1e-6;
+    return EK::Triangle_2(EK::Point_2(q[0][0] + t * (cx - q[0][0]), q[0][1] + t * (cy - q[0][1])),
+                          EK::Point_2(q[1][0] + t * (cx - q[1][0]), q[1][1] + t * (cy - q[1][1])),
+                          EK::Point_2(q[2][0] + t * (cx - q[2][0]), q[2][1] + t * (cy - q[2][1])));
+  };
+  const std::vector<face_descriptor> fa = fan(a), fb = fan(b);
+  for(face_descriptor f : fa)
+    for(face_descriptor g : fb)
+      if(f != g && CGAL::do_intersect(shrunk(f), shrunk(g))) return true;
+  return false;
 }
 
 template <class TriangleMesh, class VertexUVMap, class VPM, class VIM>
@@ -285,6 +321,9 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
         const auto pt = [](const EK::Point_2& p) { return std::array<double, 2>{p.x(), p.y()}; };
         crossing = cross_beyond(pt(seg[i].source()), pt(seg[i].target()), pt(seg[j].source()), pt(seg[j].target()),
                                 delta);
+        // touching within delta: an overlap only if the faces on either side overlap there
+        if(!crossing && CGAL::do_intersect(seg[i], seg[j]))
+          crossing = fans_overlap(tm, uv, {si, ti}, {sj, tj});
       } else {
         crossing = CGAL::do_intersect(seg[i], seg[j]);
       }
@@ -315,8 +354,10 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 ///   `CGAL_QD::parameters::overlap_tolerance`: border edges closer than this
 ///   fraction of the diagonal of the border's UV bounding box touch rather than
 ///   cross (default 0: exact tests, where touching is crossing). Two sides of a
-///   cut that develop onto each other touch; a crossing through a vertex lying
-///   within the tolerance of another border edge is not seen.
+///   cut that develop onto each other touch. Where border edges touch within
+///   the tolerance, the faces around them are compared (shrunk by a relative
+///   1e-6 toward their centroids, then tested exactly): the touch is an
+///   overlap if they overlap.
 /// \returns a report whose `status` is `OK`, `EMPTY_MESH`, `NOT_TRIANGLE_MESH` or
 ///          `INVALID_COORDINATES` (a NaN or infinite 3D or UV coordinate).
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>

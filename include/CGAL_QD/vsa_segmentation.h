@@ -12,6 +12,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -73,20 +74,6 @@ Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
   return Error_code::OK;
 }
 
-// unit normal and area of a face
-template <class TriangleMesh, class VPM>
-std::array<double, 4> face_normal_and_area(typename boost::graph_traits<TriangleMesh>::face_descriptor f,
-                                           const TriangleMesh& tm, const VPM& vpm)
-{
-  const auto h = halfedge(f, tm);
-  const auto a = point_of<TriangleMesh>(source(h, tm), vpm), b = point_of<TriangleMesh>(target(h, tm), vpm),
-             c = point_of<TriangleMesh>(target(next(h, tm), tm), vpm);
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  return {n[0] / len, n[1] / len, n[2] / len, 0.5 * len};
-}
-
 // Normalised L2,1 error of every chart, from per-face unit normals and areas.
 template <class TriangleMesh, class VPM, class FIM, class ChartOf>
 void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::size_t n_charts,
@@ -94,14 +81,13 @@ void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::s
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<std::array<double, 3>> normal_sum(n_charts, {0., 0., 0.});
-  std::vector<std::array<double, 4>> face_data(num_faces(tm));  // unit normal, area
+  const std::vector<Face_geometry> geo = face_geometry(tm, vpm, fim);
   area.assign(n_charts, 0.);
   for(typename GT::face_descriptor f : faces(tm)) {
     const std::size_t k = chart_of(f);
-    const std::array<double, 4> d = face_normal_and_area(f, tm, vpm);
-    face_data[get(fim, f)] = d;
-    for(int i = 0; i < 3; ++i) normal_sum[k][i] += d[3] * d[i];
-    area[k] += d[3];
+    const Face_geometry& d = geo[get(fim, f)];
+    for(int i = 0; i < 3; ++i) normal_sum[k][i] += d.area * d.normal[i];
+    area[k] += d.area;
   }
   error.assign(n_charts, 0.);
   for(std::size_t k = 0; k < n_charts; ++k) {
@@ -110,10 +96,11 @@ void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::s
     if(l > 0) for(int i = 0; i < 3; ++i) normal_sum[k][i] /= l;
   }
   for(typename GT::face_descriptor f : faces(tm)) {
-    const auto& d = face_data[get(fim, f)];
+    const Face_geometry& d = geo[get(fim, f)];
     const std::size_t k = chart_of(f);
-    const double x = d[0] - normal_sum[k][0], y = d[1] - normal_sum[k][1], z = d[2] - normal_sum[k][2];
-    error[k] += d[3] * (x * x + y * y + z * z);
+    const double x = d.normal[0] - normal_sum[k][0], y = d.normal[1] - normal_sum[k][1],
+                 z = d.normal[2] - normal_sum[k][2];
+    error[k] += d.area * (x * x + y * y + z * z);
   }
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
 }
@@ -174,11 +161,12 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<std::array<double, 4>> sum(n, {0., 0., 0., 0.});  // S, A
+  const std::vector<Face_geometry> geo = face_geometry(tm, vpm, fim);
   for(typename GT::face_descriptor f : faces(tm)) {
-    const std::array<double, 4> d = face_normal_and_area(f, tm, vpm);
+    const Face_geometry& d = geo[get(fim, f)];
     auto& s = sum[chart[get(fim, f)]];
-    for(int i = 0; i < 3; ++i) s[i] += d[3] * d[i];
-    s[3] += d[3];
+    for(int i = 0; i < 3; ++i) s[i] += d.area * d.normal[i];
+    s[3] += d.area;
   }
   auto merged_error = [&](std::size_t x, std::size_t y) {
     const double sx = sum[x][0] + sum[y][0], sy = sum[x][1] + sum[y][1], sz = sum[x][2] + sum[y][2];

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Runs examples/segment_mesh on CGAL's real meshes (libcgal-demo) and writes
+# the table of doc/segmentation_results.md to standard output. Run after a
+# build (bash scripts/test.sh or bash scripts/demo.sh); needs python3.
+# usage: bash scripts/segment_real_meshes.sh [extra segment_mesh options] > table.md
+set -euo pipefail
+cd "$(dirname "$0")/.."
+meshes=build/cgal_data/data/meshes
+program=build/examples/segment_mesh
+[ -x "$program" ] || { echo "build first: $program is missing" >&2; exit 1; }
+for name in fandisk bunny00 cow camel elephant mannequin-devil armadillo; do
+  "$program" "$meshes/$name.off" --json "$@" | sed "s/^{/{\"mesh\": \"$name\", /"
+done | python3 -c '
+import json, sys
+print("| mesh | faces | VSA | after splitting | final | max A(Ω) % | max L² | overlapping | seam length | trials | VSA s | refine s | merge s | flatten s | total s |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+for line in sys.stdin:
+    d = json.loads(line)
+    s = lambda k: "%.2f" % (d[k] / 1000)
+    print("| %s | %d | %d | %d | **%d** | %.2f | %.3f | %d | %.4g | %d | %s | %s | %s | %s | %s |" % (
+        d["mesh"], d["faces"], d["charts_after_vsa"], d["charts_before_merging"], d["charts"],
+        d["max_area_distortion_pct"], d["max_l2_stretch"], d["overlapping_charts"], d["seam_length"],
+        d["merge_trials"], s("time_vsa_ms"), s("time_refine_ms"), s("time_merge_ms"), s("time_flatten_ms"),
+        s("time_total_ms")))
+'
