@@ -7,7 +7,8 @@
 //
 // usage: segment_mesh <mesh> [--vsa-tolerance T] [--max-area-distortion 0.10]
 //                     [--max-stretch 2.0] [--denoise] [--no-refine] [--no-merge]
-//                     [--sequential] [--json] [--verbose]
+//                     [--merge-order largest|smallest|relative] [--sequential]
+//                     [--json] [--verbose]
 
 #include <CGAL_QD/segment_quasi_developable.h>
 
@@ -30,7 +31,8 @@ namespace {
 int usage()
 {
   std::cerr << "usage: segment_mesh <mesh> [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
-               "                    [--denoise] [--no-refine] [--no-merge] [--sequential] [--json] [--verbose]\n";
+               "                    [--denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
+               "                    [--sequential] [--json] [--verbose]\n";
   return EXIT_FAILURE;
 }
 
@@ -88,6 +90,7 @@ int main(int argc, char** argv)
   const std::string path = argv[1];
   double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0;
   bool json = false, verbose = false, denoise = false, refine = true, merge = true, sequential = false;
+  CGAL_QD::Merge_order order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
   for(int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--json") json = true;
@@ -96,6 +99,13 @@ int main(int argc, char** argv)
     else if(a == "--no-refine") refine = false;
     else if(a == "--no-merge") merge = false;
     else if(a == "--sequential") sequential = true;
+    else if(a == "--merge-order" && i + 1 < argc) {
+      const std::string o = argv[++i];
+      if(o == "largest") order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
+      else if(o == "smallest") order = CGAL_QD::Merge_order::SMALLEST_AREA_FIRST;
+      else if(o == "relative") order = CGAL_QD::Merge_order::LONGEST_RELATIVE_CURVE_FIRST;
+      else return usage();
+    }
     else if(a == "--vsa-tolerance") { if(!read_number(i, argc, argv, vsa_tolerance)) return usage(); }
     else if(a == "--max-area-distortion") { if(!read_number(i, argc, argv, max_area)) return usage(); }
     else if(a == "--max-stretch") { if(!read_number(i, argc, argv, max_stretch)) return usage(); }
@@ -121,7 +131,9 @@ int main(int argc, char** argv)
           max_area, QP::max_l2_stretch(
                         max_stretch, QP::denoise_boundaries(
                                          denoise, QP::refine_boundaries(
-                                                      refine, QP::merge_charts(merge, CGAL::parameters::verbose(verbose)))))));
+                                                      refine, QP::merge_charts(
+                                                                  merge, QP::merge_order(
+                                                                             order, CGAL::parameters::verbose(verbose))))))));
   const CGAL_QD::Segmentation_result<Mesh> r =
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);

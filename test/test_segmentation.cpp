@@ -562,6 +562,22 @@ BOOST_AUTO_TEST_CASE(steps_can_be_switched_and_thresholds_hold)
     BOOST_TEST(std::abs(rd.points[v][2] - denoised.at(v).z()) == 0.);
 }
 
+BOOST_AUTO_TEST_CASE(every_merge_order_gives_valid_charts)
+{
+  const Surface_mesh tm = make<Surface_mesh>(torus(48, 24));
+  for(QD::Merge_order order : {QD::Merge_order::LARGEST_AREA_FIRST, QD::Merge_order::SMALLEST_AREA_FIRST,
+                               QD::Merge_order::LONGEST_RELATIVE_CURVE_FIRST}) {
+    Chart_map<Surface_mesh> chart;
+    const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart),
+                                                 QD::parameters::merge_order(order));
+    BOOST_REQUIRE(r);
+    BOOST_TEST_MESSAGE("torus, merge order " << int(order) << ": " << r.charts_before_merging << " -> "
+                                             << r.number_of_charts << " charts, " << r.merging.trials << " trials");
+    BOOST_TEST(r.number_of_charts < r.charts_before_merging);
+    expect_valid_segmentation(tm, chart, r);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(segmentation_rejects_bad_input)
 {
   Chart_map<Surface_mesh> chart;

@@ -87,6 +87,18 @@ struct Merging_result
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
+/// \ingroup PkgCGAL_QDRef
+/// the order in which `merge_charts_by_boundaries()` tries the boundary curves.
+enum class Merge_order
+{
+  /// the paper's: the curve whose two charts have the largest total area first
+  LARGEST_AREA_FIRST,
+  /// the curve whose two charts have the smallest total area first: small, cheap trials first
+  SMALLEST_AREA_FIRST,
+  /// the curve with the largest length / sqrt(area of its two charts) first: charts that share much border
+  LONGEST_RELATIVE_CURVE_FIRST
+};
+
 namespace internal {
 
 struct Merge_thresholds
@@ -376,6 +388,8 @@ public:
 
   std::size_t number_of_curves() const { return m_curves.size(); }
 
+  void set_order(Merge_order order) { m_order = order; }
+
   // The greedy merging of the paper, Section 4.2. Returns (trials, merges).
   template <class ConcurrencyTag>
   std::pair<std::size_t, std::size_t> merge(const std::vector<Face_geometry>& geo, const Progress& progress,
@@ -511,7 +525,12 @@ private:
   double key(std::size_t c) const
   {
     const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
-    return r1 == r2 ? m_area[r1] : m_area[r1] + m_area[r2];
+    const double area = r1 == r2 ? m_area[r1] : m_area[r1] + m_area[r2];
+    switch(m_order) {
+    case Merge_order::SMALLEST_AREA_FIRST: return -area;
+    case Merge_order::LONGEST_RELATIVE_CURVE_FIRST: return m_curves[c].length / std::sqrt(area);
+    default: return area;
+    }
   }
 
   Chart_report trial(std::size_t c) const
@@ -560,6 +579,7 @@ private:
   std::vector<std::vector<face_descriptor>> m_faces_of_chart;
   std::vector<double> m_area;
   std::size_t m_final_count = 0;
+  Merge_order m_order = Merge_order::LARGEST_AREA_FIRST;
 };
 
 template <class TriangleMesh, class NamedParameters>
@@ -611,6 +631,7 @@ std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const
 ///   - `CGAL_QD::parameters::max_area_distortion` (default 0.10), `CGAL_QD::parameters::max_l2_stretch` (default 2.0)
 ///   - `CGAL_QD::parameters::overlap_tolerance`: see `compute_distortion()` (default 1e-9: the sides of a
 ///     cut that develop onto each other touch, they do not overlap)
+///   - `CGAL_QD::parameters::merge_order`: a `Merge_order` (default `LARGEST_AREA_FIRST`, the paper's)
 ///   - `callback`: called with (step name, fraction done) during the run
 ///   - `verbose`: print every trial to `std::cerr` (default `false`)
 ///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
@@ -656,6 +677,7 @@ Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, 
   result.time_split_ms = internal::milliseconds_since(t);
   merger.build_curves();
   result.boundary_curves = merger.number_of_curves();
+  merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::LARGEST_AREA_FIRST));
   std::tie(result.trials, result.merges) = merger.template merge<ConcurrencyTag>(geo, progress, verbose);
   result.number_of_charts = merger.number_of_final_charts();
   result.seam_length = merger.seams(std::back_inserter(result.seam_edges));

@@ -28,6 +28,7 @@ struct denoising_iterations_t {};
 struct merge_charts_t {};
 struct denoised_point_map_t {};
 struct overlap_tolerance_t {};
+struct merge_order_t {};
 struct max_area_distortion_t {};
 struct max_l2_stretch_t {};
 
@@ -94,6 +95,9 @@ CGAL_QD_ADD_NAMED_PARAMETER(max_l2_stretch)
 /// border's UV bounding box touch rather than cross (see `compute_distortion()`).
 /// Default: 0 in `compute_distortion()`, 1e-9 in the segmentation.
 CGAL_QD_ADD_NAMED_PARAMETER(overlap_tolerance)
+/// the order of the merging trials, a `CGAL_QD::Merge_order`. Default:
+/// `Merge_order::LARGEST_AREA_FIRST`, the paper's.
+CGAL_QD_ADD_NAMED_PARAMETER(merge_order)
 
 #undef CGAL_QD_ADD_NAMED_PARAMETER
 

@@ -101,7 +101,7 @@ struct Segmentation_result
 /// \param np optional named parameters: those of the steps (`CGAL_QD::parameters::vsa_tolerance`,
 ///   `max_number_of_proxies`, `number_of_relaxations`, `CGAL_QD::parameters::refinement_band_width`,
 ///   `CGAL_QD::parameters::denoising_iterations`, `CGAL_QD::parameters::max_area_distortion`,
-///   `CGAL_QD::parameters::max_l2_stretch`, `CGAL_QD::parameters::overlap_tolerance`), the switches `CGAL_QD::parameters::refine_boundaries`,
+///   `CGAL_QD::parameters::max_l2_stretch`, `CGAL_QD::parameters::overlap_tolerance`, `CGAL_QD::parameters::merge_order`), the switches `CGAL_QD::parameters::refine_boundaries`,
 ///   `CGAL_QD::parameters::denoise_boundaries`, `CGAL_QD::parameters::merge_charts`,
 ///   `CGAL_QD::parameters::denoised_point_map` (receives the denoised points), `callback` (called with a
 ///   step name, "vsa", "refine", "denoise", "split", "merge" or "flatten", and the fraction done), `verbose`
@@ -188,6 +188,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   result.charts_before_merging = result.charts_after_refinement + result.merging.charts_split;
   merger.build_curves();
   result.merging.boundary_curves = merger.number_of_curves();
+  merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::LARGEST_AREA_FIRST));
   if(progress && merge) progress("merge", 0.);
   std::tie(result.merging.trials, result.merging.merges) =
       merger.template merge<ConcurrencyTag>(geo, progress, verbose, merge);
