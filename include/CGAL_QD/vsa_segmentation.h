@@ -229,7 +229,7 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm
 /// \param np optional named parameters:
 ///   - `CGAL_QD::parameters::vsa_tolerance`: the largest normalised L2,1 error of a chart (default 0.25,
 ///     which gives 29 charts on `bunny00` and 13 on `fandisk`)
-///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: max(8, faces / 40));
+///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: max(50, faces / 200));
 ///     `Vsa_result::tolerance_reached` tells whether the tolerance or this cap stopped the addition
 ///   - `number_of_relaxations`: relaxation iterations after each addition (default 3)
 ///   - `vertex_point_map`, `face_index_map`
@@ -253,10 +253,12 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   const double tolerance = choose_parameter(get_parameter(np, internal_np::vsa_tolerance_t()), 0.25);
   const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
   // the normalised error does not drop below the spread of neighbouring face
-  // normals: on a coarse or noisy mesh the tolerance may be out of reach, and
-  // the cap keeps the charts at 40 faces on average
+  // normals: on a coarse or detailed mesh the tolerance may be out of reach,
+  // and the cap keeps the charts at 200 faces on average before the merge-back
+  // (at least 50 proxies: small meshes are cheap, and CAD parts have many planes)
+  // (every VSA round re-partitions the whole mesh, so the cap bounds the time)
   const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),
-                                                   (std::max<std::size_t>)(8, nf / 40));
+                                                   (std::max<std::size_t>)(50, nf / 200));
   const std::size_t relaxations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxations), 3);
 
   result.status = internal::validate_mesh_to_segment(tm, vpm);
