@@ -3,13 +3,17 @@
 //
 // Segments a triangle mesh into quasi-developable charts (error-controlled VSA,
 // minimum-cut refinement, optional denoising, LPFB-based merging) and prints
-// what every step did, or one JSON object with --json.
+// what every step did, or one JSON object with --json. With --out-dir it
+// writes charts.ply (a colour and chart id per face) and atlas.obj with
+// atlas.mtl (every chart flattened and packed into the unit square).
 //
-// usage: segment_mesh <mesh> [--vsa-tolerance T] [--max-area-distortion 0.10]
+// usage: segment_mesh <mesh> [--out-dir DIR] [--vsa-tolerance T] [--max-area-distortion 0.10]
 //                     [--max-stretch 2.0] [--denoise] [--no-refine] [--no-merge]
 //                     [--merge-order largest|smallest|relative] [--sequential]
 //                     [--json] [--verbose]
 
+#include <CGAL_QD/IO/charts_and_atlas.h>
+#include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -20,6 +24,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -30,7 +36,8 @@ namespace {
 
 int usage()
 {
-  std::cerr << "usage: segment_mesh <mesh> [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
+  std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--vsa-tolerance T] [--max-area-distortion 0.10]\n"
+               "                    [--max-stretch 2.0]\n"
                "                    [--denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
                "                    [--sequential] [--json] [--verbose]\n";
   return EXIT_FAILURE;
@@ -91,6 +98,7 @@ int main(int argc, char** argv)
   double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0;
   bool json = false, verbose = false, denoise = false, refine = true, merge = true, sequential = false;
   CGAL_QD::Merge_order order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
+  std::string out_dir;
   for(int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--json") json = true;
@@ -99,6 +107,7 @@ int main(int argc, char** argv)
     else if(a == "--no-refine") refine = false;
     else if(a == "--no-merge") merge = false;
     else if(a == "--sequential") sequential = true;
+    else if(a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
     else if(a == "--merge-order" && i + 1 < argc) {
       const std::string o = argv[++i];
       if(o == "largest") order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
@@ -137,6 +146,23 @@ int main(int argc, char** argv)
   const CGAL_QD::Segmentation_result<Mesh> r =
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
+  if(r && !out_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    const std::filesystem::path dir(out_dir);
+    const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(mesh, chart, r.corner_uv);
+    std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl");
+    const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
+                    CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
+                    (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n");
+    if(!ok) {
+      std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
+      return EXIT_FAILURE;
+    }
+    if(!json)
+      std::cout << "wrote " << (dir / "charts.ply").string() << ", " << (dir / "atlas.obj").string() << " and "
+                << (dir / "atlas.mtl").string() << " (atlas coverage " << atlas.coverage << ")\n";
+  }
   if(json) {
     print_json(r);
     return r ? EXIT_SUCCESS : EXIT_FAILURE;

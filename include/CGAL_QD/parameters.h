@@ -29,6 +29,7 @@ struct merge_charts_t {};
 struct denoised_point_map_t {};
 struct overlap_tolerance_t {};
 struct merge_order_t {};
+struct atlas_margin_t {};
 struct max_area_distortion_t {};
 struct max_l2_stretch_t {};
 
@@ -98,6 +99,9 @@ CGAL_QD_ADD_NAMED_PARAMETER(overlap_tolerance)
 /// the order of the merging trials, a `CGAL_QD::Merge_order`. Default:
 /// `Merge_order::LARGEST_AREA_FIRST`, the paper's.
 CGAL_QD_ADD_NAMED_PARAMETER(merge_order)
+/// the free space around each chart in `pack_charts()`, about a fraction of
+/// the atlas side. Default: 0.005.
+CGAL_QD_ADD_NAMED_PARAMETER(atlas_margin)
 
 #undef CGAL_QD_ADD_NAMED_PARAMETER
 
