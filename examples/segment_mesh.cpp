@@ -4,15 +4,18 @@
 // Segments a triangle mesh into quasi-developable charts (error-controlled VSA,
 // minimum-cut refinement, optional denoising, LPFB-based merging) and prints
 // what every step did, or one JSON object with --json. With --out-dir it
-// writes charts.ply (a colour and chart id per face) and atlas.obj with
-// atlas.mtl (every chart flattened and packed into the unit square).
+// writes charts.ply (a colour and chart id per face), atlas.obj with atlas.mtl
+// (every chart flattened and packed into the unit square) and patterns.svg
+// (every chart at true scale on pages, to print and cut).
 //
-// usage: segment_mesh <mesh> [--out-dir DIR] [--vsa-tolerance T] [--max-area-distortion 0.10]
+// usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
+//                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
 //                     [--max-stretch 2.0] [--denoise] [--no-refine] [--no-merge]
 //                     [--merge-order largest|smallest|relative] [--sequential]
 //                     [--json] [--verbose]
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
+#include <CGAL_QD/IO/patterns_svg.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
@@ -36,8 +39,8 @@ namespace {
 
 int usage()
 {
-  std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--vsa-tolerance T] [--max-area-distortion 0.10]\n"
-               "                    [--max-stretch 2.0]\n"
+  std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter] [--tabs]\n"
+               "                    [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
                "                    [--denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
                "                    [--sequential] [--json] [--verbose]\n";
   return EXIT_FAILURE;
@@ -99,6 +102,7 @@ int main(int argc, char** argv)
   bool json = false, verbose = false, denoise = false, refine = true, merge = true, sequential = false;
   CGAL_QD::Merge_order order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
   std::string out_dir;
+  CGAL_QD::IO::Pattern_options pattern;
   for(int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--json") json = true;
@@ -108,6 +112,17 @@ int main(int argc, char** argv)
     else if(a == "--no-merge") merge = false;
     else if(a == "--sequential") sequential = true;
     else if(a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
+    else if(a == "--scale") { if(!read_number(i, argc, argv, pattern.scale)) return usage(); }
+    else if(a == "--units" && i + 1 < argc) pattern.units = argv[++i];
+    else if(a == "--tabs") pattern.tabs = true;
+    else if(a == "--page" && i + 1 < argc) {
+      const std::string page = argv[++i];
+      // in millimetres; the page follows --units only for mm
+      if(page == "a4") pattern.page_width = 210, pattern.page_height = 297;
+      else if(page == "a3") pattern.page_width = 297, pattern.page_height = 420;
+      else if(page == "letter") pattern.page_width = 215.9, pattern.page_height = 279.4;
+      else return usage();
+    }
     else if(a == "--merge-order" && i + 1 < argc) {
       const std::string o = argv[++i];
       if(o == "largest") order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
@@ -151,17 +166,19 @@ int main(int argc, char** argv)
     std::filesystem::create_directories(out_dir, ec);
     const std::filesystem::path dir(out_dir);
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(mesh, chart, r.corner_uv);
-    std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl");
+    std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg");
     const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
                     CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
-                    (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n");
+                    (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
+                    CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern);
     if(!ok) {
       std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
       return EXIT_FAILURE;
     }
     if(!json)
-      std::cout << "wrote " << (dir / "charts.ply").string() << ", " << (dir / "atlas.obj").string() << " and "
-                << (dir / "atlas.mtl").string() << " (atlas coverage " << atlas.coverage << ")\n";
+      std::cout << "wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage
+                << ") and patterns.svg (" << pattern.scale << " " << pattern.units << " per mesh unit) into "
+                << dir.string() << "\n";
   }
   if(json) {
     print_json(r);

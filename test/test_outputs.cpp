@@ -8,11 +8,15 @@
 #include "test_utils.h"
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
+#include <CGAL_QD/IO/patterns_svg.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
 
 #include <cmath>
 #include <limits>
@@ -214,5 +218,74 @@ BOOST_AUTO_TEST_CASE(obj_with_uv_keeps_every_corner)
   std::stringstream ss;
   const Segmented& s = meshes().front();
   BOOST_TEST(!QD::IO::write_OBJ_with_uv(ss, s.tm, std::vector<std::array<double, 2>>(3)));
+  BOOST_TEST(ss.str().empty());
+}
+
+BOOST_AUTO_TEST_CASE(patterns_are_true_scale_with_matching_labels)
+{
+  for(const Segmented& s : meshes()) {
+    QD::IO::Pattern_options options;
+    options.scale = 100;  // drawing units per mesh unit
+    options.tabs = true;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr = QD::IO::write_patterns_SVG(
+        ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv, s.result.seam_edges, options);
+    BOOST_REQUIRE(pr);
+    BOOST_TEST_MESSAGE(pr.number_of_charts << " pieces on " << pr.number_of_pages << " pages, " << pr.seam_labels
+                                           << " seam labels, " << pr.fold_lines << " fold lines, " << pr.tabs << " tabs");
+    BOOST_TEST(pr.number_of_charts == s.result.number_of_charts);
+    // well-formed XML, parsed by Boost.PropertyTree
+    boost::property_tree::ptree tree;
+    BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+    const auto& svg = tree.get_child("svg");
+    std::map<std::string, int> labels;
+    std::size_t cuts = 0, charts = 0, tabs = 0;
+    std::vector<Surface_mesh::Vertex_index> vs(vertices(s.tm).begin(), vertices(s.tm).end());
+    double worst = 0;
+    for(const auto& child : svg) {
+      const auto& node = child.second;
+      const std::string cls = node.get<std::string>("<xmlattr>.class", "");
+      if(child.first == "text" && cls == "seam") ++labels[node.data()];
+      if(child.first == "text" && cls == "chart") ++charts;
+      if(child.first == "polygon" && cls == "tab") ++tabs;
+      if(child.first == "line" && cls == "cut") {
+        ++cuts;
+        std::istringstream ids(node.get<std::string>("<xmlattr>.data-v"));
+        std::size_t i, j;
+        ids >> i >> j;
+        const double l3 = std::sqrt(CGAL::squared_distance(s.tm.point(vs[i]), s.tm.point(vs[j])));
+        const double l2 = std::hypot(node.get<double>("<xmlattr>.x2") - node.get<double>("<xmlattr>.x1"),
+                                     node.get<double>("<xmlattr>.y2") - node.get<double>("<xmlattr>.y1"));
+        worst = std::max(worst, std::abs(l2 - options.scale * l3));
+      }
+    }
+    // printed edge lengths are the 3D lengths at the scale, to the SVG's 4 decimals
+    BOOST_TEST(worst < 2e-4);
+    BOOST_TEST(cuts == pr.cut_edges);
+    BOOST_TEST(charts == s.result.number_of_charts);
+    BOOST_TEST(tabs == pr.tabs);
+    BOOST_TEST(labels.size() == pr.seam_labels);
+    for(const auto& l : labels) BOOST_TEST(l.second == 2, "label " << l.first << " appears " << l.second << " times");
+    // every seam edge is cut on both sides, every mesh border edge on one
+    std::size_t border = 0;
+    for(auto h : halfedges(s.tm)) border += is_border(h, s.tm);
+    BOOST_TEST(pr.cut_edges == 2 * s.result.seam_edges.size() + border);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
+{
+  const Segmented& s = meshes().front();
+  std::stringstream ss;
+  QD::IO::Pattern_options bad;
+  bad.scale = 0;
+  BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                         s.result.seam_edges, bad)
+                  .status == QD::Error_code::INVALID_COORDINATES));
+  bad = QD::IO::Pattern_options();
+  bad.page_width = 15;  // narrower than its margins
+  BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                         s.result.seam_edges, bad)
+                  .status == QD::Error_code::INVALID_COORDINATES));
   BOOST_TEST(ss.str().empty());
 }

@@ -56,6 +56,47 @@ struct Atlas_result
 
 namespace internal {
 
+// the smallest-area enclosing rectangle of a point set: rotating the points by
+// `angle` puts them in [low, low + size]
+struct Rectangle
+{
+  double angle = 0;
+  std::array<double, 2> low{{0, 0}}, size{{0, 0}};
+};
+
+inline Rectangle min_area_rectangle(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_2>& points)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Point;
+  Rectangle best;
+  if(points.empty()) return best;
+  std::vector<Point> hull;
+  CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
+  double best_area = std::numeric_limits<double>::infinity();
+  for(std::size_t e = 0; e < hull.size(); ++e) {
+    const Point &p = hull[e], &q = hull[(e + 1) % hull.size()];
+    const double dx = q.x() - p.x(), dy = q.y() - p.y();
+    // rotate by -atan2(dy, dx): the hull edge becomes horizontal
+    const double angle = hull.size() < 2 || !(std::hypot(dx, dy) > 0) ? 0. : -std::atan2(dy, dx);
+    const double c = std::cos(angle), s = std::sin(angle);
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    for(const Point& h : hull) {
+      const double x = c * h.x() - s * h.y(), y = s * h.x() + c * h.y();
+      x0 = (std::min)(x0, x);
+      x1 = (std::max)(x1, x);
+      y0 = (std::min)(y0, y);
+      y1 = (std::max)(y1, y);
+    }
+    if((x1 - x0) * (y1 - y0) < best_area) {
+      best_area = (x1 - x0) * (y1 - y0);
+      best.angle = angle;
+      best.low = {{x0, y0}};
+      best.size = {{x1 - x0, y1 - y0}};
+    }
+    if(hull.size() < 2) break;
+  }
+  return best;
+}
+
 struct Packing_box
 {
   std::size_t chart;
@@ -182,31 +223,10 @@ Atlas_result pack_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,
   double box_area = 0;
   for(std::size_t k = 0; k < n; ++k) {
     if(points[k].empty()) continue;
-    std::vector<K::Point_2> hull;
-    CGAL::convex_hull_2(points[k].begin(), points[k].end(), std::back_inserter(hull));
-    double best = std::numeric_limits<double>::infinity();
-    for(std::size_t e = 0; e < hull.size(); ++e) {
-      const K::Point_2 &p = hull[e], &q = hull[(e + 1) % hull.size()];
-      const double dx = q.x() - p.x(), dy = q.y() - p.y(), l = std::hypot(dx, dy);
-      // rotate by -atan2(dy, dx): the edge becomes horizontal
-      const double angle = hull.size() < 2 || !(l > 0) ? 0. : -std::atan2(dy, dx);
-      const double c = std::cos(angle), s = std::sin(angle);
-      double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-      for(const K::Point_2& h : hull) {
-        const double x = c * h.x() - s * h.y(), y = s * h.x() + c * h.y();
-        x0 = (std::min)(x0, x);
-        x1 = (std::max)(x1, x);
-        y0 = (std::min)(y0, y);
-        y1 = (std::max)(y1, y);
-      }
-      if((x1 - x0) * (y1 - y0) < best) {
-        best = (x1 - x0) * (y1 - y0);
-        result.charts[k].angle = angle;
-        result.charts[k].size = {{x1 - x0, y1 - y0}};
-        low[k] = {{x0, y0}};
-      }
-      if(hull.size() < 2) break;
-    }
+    const internal::Rectangle r = internal::min_area_rectangle(points[k]);
+    result.charts[k].angle = r.angle;
+    result.charts[k].size = r.size;
+    low[k] = r.low;
     box_area += result.charts[k].size[0] * result.charts[k].size[1];
   }
   if(!(box_area > 0)) box_area = 1;
