@@ -5,8 +5,9 @@
 // minimum-cut refinement, optional denoising, LPFB-based merging) and prints
 // what every step did, or one JSON object with --json. With --out-dir it
 // writes charts.ply (a colour and chart id per face), atlas.obj with atlas.mtl
-// (every chart flattened and packed into the unit square) and patterns.svg
-// (every chart at true scale on pages, to print and cut).
+// (every chart flattened and packed into the unit square), patterns.svg
+// (every chart at true scale on pages, to print and cut) and segmentation.svg
+// (a picture of the mesh in its chart colours).
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
@@ -16,6 +17,7 @@
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
 #include <CGAL_QD/IO/patterns_svg.h>
+#include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
@@ -166,19 +168,21 @@ int main(int argc, char** argv)
     std::filesystem::create_directories(out_dir, ec);
     const std::filesystem::path dir(out_dir);
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(mesh, chart, r.corner_uv);
-    std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg");
+    std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg"),
+        picture(dir / "segmentation.svg");
     const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
                     CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
                     (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
-                    CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern);
+                    CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern) &&
+                    CGAL_QD::IO::write_segmentation_SVG(picture, mesh, chart, r.seam_edges) == CGAL_QD::Error_code::OK;
     if(!ok) {
       std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
       return EXIT_FAILURE;
     }
     if(!json)
       std::cout << "wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage
-                << ") and patterns.svg (" << pattern.scale << " " << pattern.units << " per mesh unit) into "
-                << dir.string() << "\n";
+                << "), patterns.svg (" << pattern.scale << " " << pattern.units
+                << " per mesh unit) and segmentation.svg into " << dir.string() << "\n";
   }
   if(json) {
     print_json(r);

@@ -9,6 +9,7 @@
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
 #include <CGAL_QD/IO/patterns_svg.h>
+#include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
@@ -288,4 +289,39 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
                                          s.result.seam_edges, bad)
                   .status == QD::Error_code::INVALID_COORDINATES));
   BOOST_TEST(ss.str().empty());
+}
+
+BOOST_AUTO_TEST_CASE(segmentation_picture_draws_every_face_and_seam)
+{
+  for(const Segmented& s : meshes()) {
+    std::stringstream ss;
+    BOOST_REQUIRE((QD::IO::write_segmentation_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart),
+                                                  s.result.seam_edges) == QD::Error_code::OK));
+    boost::property_tree::ptree tree;
+    BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+    std::size_t polygons = 0, lines = 0;
+    std::set<std::string> fills;
+    for(const auto& child : tree.get_child("svg.g")) {
+      if(child.first == "polygon") {
+        ++polygons;
+        fills.insert(child.second.get<std::string>("<xmlattr>.fill"));
+        // every point inside the picture
+        std::istringstream pts(child.second.get<std::string>("<xmlattr>.points"));
+        std::string xy;
+        while(pts >> xy) {
+          const double x = std::stod(xy.substr(0, xy.find(','))), y = std::stod(xy.substr(xy.find(',') + 1));
+          BOOST_TEST((x >= 0 && x <= 800 && y >= 0 && y <= 800));
+        }
+      }
+      if(child.first == "line") ++lines;
+    }
+    BOOST_TEST(polygons == num_faces(s.tm));
+    BOOST_TEST(lines == 2 * s.result.seam_edges.size());  // a seam edge is drawn with each of its faces
+    BOOST_TEST(fills.size() > s.result.number_of_charts);  // shaded chart colours
+  }
+  std::stringstream ss;
+  const Surface_mesh empty;
+  Chart_map none;
+  BOOST_TEST((QD::IO::write_segmentation_SVG(ss, empty, boost::make_assoc_property_map(none),
+                                             std::vector<Surface_mesh::Edge_index>()) == QD::Error_code::EMPTY_MESH));
 }
