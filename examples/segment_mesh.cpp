@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -163,6 +164,8 @@ int main(int argc, char** argv)
   const CGAL_QD::Segmentation_result<Mesh> r =
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
+  std::string written;
+  CGAL_QD::IO::Pattern_result pages;
   if(r && !out_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
@@ -173,16 +176,19 @@ int main(int argc, char** argv)
     const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
                     CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
                     (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
-                    CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern) &&
+                    (pages = CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern)) &&
                     CGAL_QD::IO::write_segmentation_SVG(picture, mesh, chart, r.seam_edges) == CGAL_QD::Error_code::OK;
     if(!ok) {
       std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
       return EXIT_FAILURE;
     }
-    if(!json)
-      std::cout << "wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage
-                << "), patterns.svg (" << pattern.scale << " " << pattern.units
-                << " per mesh unit) and segmentation.svg into " << dir.string() << "\n";
+    std::ostringstream message;
+    message << "  wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage << "), patterns.svg ("
+            << pages.number_of_pages << (pages.number_of_pages == 1 ? " page" : " pages") << " at " << pattern.scale
+            << ' ' << pattern.units << " per mesh unit";
+    if(pages.oversized_charts > 0) message << ", " << pages.oversized_charts << " pieces larger than a page";
+    message << ") and segmentation.svg into " << dir.string() << "\n";
+    written = message.str();
   }
   if(json) {
     print_json(r);
@@ -204,6 +210,7 @@ int main(int argc, char** argv)
             << "  max L2         " << r.max_l2_stretch << "\n"
             << "  overlapping    " << r.overlapping_charts << " charts\n"
             << "  seam length    " << r.seam_length << "\n"
-            << "  total          " << r.time_total_ms << " ms\n";
+            << "  total          " << r.time_total_ms << " ms\n"
+            << written;
   return EXIT_SUCCESS;
 }

@@ -16,7 +16,7 @@ if [ $# -ge 1 ]; then
   shift
   "$build/examples/segment_mesh" "$mesh" --out-dir "$build/demo" "$@"
 else
-  # fandisk is about 1 mesh unit across: 150 mm per unit prints it about 15 cm long
+  # fandisk is about 1 mesh unit tall: 80 mm per unit puts its four pieces on one A4 page
   "$build/examples/segment_mesh" "$build/cgal_data/data/meshes/fandisk.off" --out-dir "$build/demo" \
-    --scale 150 --tabs
+    --scale 80 --tabs
 fi
