@@ -7,13 +7,16 @@
 // writes charts.ply (a colour and chart id per face), atlas.obj with atlas.mtl
 // (every chart flattened and packed into the unit square), patterns.svg
 // (every chart at true scale on pages, to print and cut) and segmentation.svg
-// (a picture of the mesh in its chart colours).
+// (a picture of the mesh in its chart colours) and report.json (what --json
+// prints). Polygon faces are triangulated and degenerate faces removed, and the
+// summary says so. On a terminal a progress bar runs on standard error unless
+// --quiet.
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
 //                     [--max-stretch 2.0] [--denoise] [--no-refine] [--no-merge]
 //                     [--merge-order largest|smallest|relative] [--sequential]
-//                     [--json] [--verbose]
+//                     [--json] [--verbose] [--quiet]
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
 #include <CGAL_QD/IO/patterns_svg.h>
@@ -24,16 +27,22 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -45,7 +54,7 @@ int usage()
   std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter] [--tabs]\n"
                "                    [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
                "                    [--denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
-               "                    [--sequential] [--json] [--verbose]\n";
+               "                    [--sequential] [--json] [--verbose] [--quiet]\n";
   return EXIT_FAILURE;
 }
 
@@ -67,9 +76,9 @@ std::string number(double x)
 }
 
 template <class Result>
-void print_json(const Result& r)
+void print_json(std::ostream& out, const Result& r)
 {
-  std::cout << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": " << r.number_of_faces
+  out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": " << r.number_of_faces
             << ", \"charts_after_vsa\": " << r.charts_after_vsa
             << ", \"charts_after_refinement\": " << r.charts_after_refinement
             << ", \"charts_before_merging\": " << r.charts_before_merging << ", \"charts\": " << r.number_of_charts
@@ -85,14 +94,14 @@ void print_json(const Result& r)
             << ", \"time_total_ms\": " << number(r.time_total_ms) << ", \"per_chart\": [";
   for(std::size_t k = 0; k < r.charts.size(); ++k) {
     const CGAL_QD::Chart_report& c = r.charts[k];
-    std::cout << (k ? ", " : "") << "{\"chart\": " << k << ", \"status\": \"" << CGAL_QD::error_message(c.status)
+    out << (k ? ", " : "") << "{\"chart\": " << k << ", \"status\": \"" << CGAL_QD::error_message(c.status)
               << "\", \"faces\": " << c.number_of_faces << ", \"area\": " << number(c.area)
               << ", \"border_loops\": " << c.number_of_border_loops
               << ", \"area_distortion_pct\": " << number(c.area_distortion)
               << ", \"l2_stretch\": " << number(c.l2_stretch) << ", \"overlap\": " << (c.overlap ? "true" : "false")
               << "}";
   }
-  std::cout << "]}\n";
+  out << "]}\n";
 }
 
 } // namespace
@@ -102,7 +111,7 @@ int main(int argc, char** argv)
   if(argc < 2) return usage();
   const std::string path = argv[1];
   double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0;
-  bool json = false, verbose = false, denoise = false, refine = true, merge = true, sequential = false;
+  bool json = false, verbose = false, quiet = false, denoise = false, refine = true, merge = true, sequential = false;
   CGAL_QD::Merge_order order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
   std::string out_dir;
   CGAL_QD::IO::Pattern_options pattern;
@@ -110,6 +119,7 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--json") json = true;
     else if(a == "--verbose") verbose = true;
+    else if(a == "--quiet") quiet = true;
     else if(a == "--denoise") denoise = true;
     else if(a == "--no-refine") refine = false;
     else if(a == "--no-merge") merge = false;
@@ -144,10 +154,37 @@ int main(int argc, char** argv)
     std::cerr << "segment_mesh: cannot read a polygon mesh from '" << path << "'\n";
     return EXIT_FAILURE;
   }
+  // repairs: polygons become triangles, degenerate faces go; say what was done
+  std::string repaired;
   if(!CGAL::is_triangle_mesh(mesh)) {
-    std::cerr << "segment_mesh: '" << path << "' has faces that are not triangles\n";
-    return EXIT_FAILURE;
+    const std::size_t before = num_faces(mesh);
+    if(!CGAL::Polygon_mesh_processing::triangulate_faces(mesh)) {
+      std::cerr << "segment_mesh: '" << path << "' has polygons that cannot be triangulated\n";
+      return EXIT_FAILURE;
+    }
+    repaired += "  repaired       " + std::to_string(before) + " polygons triangulated into " +
+                std::to_string(num_faces(mesh)) + " triangles\n";
   }
+  {
+    const std::size_t before = num_faces(mesh);
+    CGAL::Polygon_mesh_processing::remove_degenerate_faces(mesh);
+    mesh.collect_garbage();
+    if(num_faces(mesh) != before)
+      repaired += "  repaired       " + std::to_string(before - num_faces(mesh)) + " degenerate faces removed\n";
+    if(faces(mesh).empty()) {
+      std::cerr << "segment_mesh: every face of '" << path << "' is degenerate\n";
+      return EXIT_FAILURE;
+    }
+  }
+  // a progress bar on a terminal
+  const bool bar = !quiet && !json && !verbose && isatty(fileno(stderr));
+  auto progress = [&](const char* step, double done) {
+    if(!bar) return;
+    const int width = 30, filled = static_cast<int>(done * width + 0.5);
+    std::fprintf(stderr, "\r%-8s [%s%s] %3d%%", step, std::string(filled, '#').c_str(),
+                 std::string(width - filled, ' ').c_str(), static_cast<int>(100 * done + 0.5));
+    std::fflush(stderr);
+  };
 
   auto chart = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
   namespace QP = CGAL_QD::parameters;
@@ -160,10 +197,13 @@ int main(int argc, char** argv)
                                          denoise, QP::refine_boundaries(
                                                       refine, QP::merge_charts(
                                                                   merge, QP::merge_order(
-                                                                             order, CGAL::parameters::verbose(verbose))))))));
+                                                                             order, CGAL::parameters::verbose(verbose).callback(
+                                                                                        std::function<void(const char*, double)>(
+                                                                                            progress)))))))));
   const CGAL_QD::Segmentation_result<Mesh> r =
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
+  if(bar) std::fprintf(stderr, "\r%60s\r", "");
   std::string written;
   CGAL_QD::IO::Pattern_result pages;
   if(r && !out_dir.empty()) {
@@ -172,12 +212,14 @@ int main(int argc, char** argv)
     const std::filesystem::path dir(out_dir);
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(mesh, chart, r.corner_uv);
     std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg"),
-        picture(dir / "segmentation.svg");
+        picture(dir / "segmentation.svg"), report(dir / "report.json");
+    print_json(report, r);
     const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
                     CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
                     (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
                     (pages = CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern)) &&
-                    CGAL_QD::IO::write_segmentation_SVG(picture, mesh, chart, r.seam_edges) == CGAL_QD::Error_code::OK;
+                    CGAL_QD::IO::write_segmentation_SVG(picture, mesh, chart, r.seam_edges) == CGAL_QD::Error_code::OK &&
+                    bool(report);
     if(!ok) {
       std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
       return EXIT_FAILURE;
@@ -187,11 +229,11 @@ int main(int argc, char** argv)
             << pages.number_of_pages << (pages.number_of_pages == 1 ? " page" : " pages") << " at " << pattern.scale
             << ' ' << pattern.units << " per mesh unit";
     if(pages.oversized_charts > 0) message << ", " << pages.oversized_charts << " pieces larger than a page";
-    message << ") and segmentation.svg into " << dir.string() << "\n";
+    message << "), segmentation.svg and report.json into " << dir.string() << "\n";
     written = message.str();
   }
   if(json) {
-    print_json(r);
+    print_json(std::cout, r);
     return r ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   if(!r) {
@@ -199,6 +241,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
   std::cout << path << ": " << r.number_of_faces << " faces\n"
+            << repaired
             << "  VSA            " << r.charts_after_vsa << " charts, " << r.time_vsa_ms << " ms\n"
             << "  refinement     " << r.charts_after_refinement << " charts, " << r.time_refine_ms << " ms\n"
             << "  denoising      " << (denoise ? std::to_string(r.time_denoise_ms) + " ms" : std::string("off"))

@@ -108,9 +108,9 @@ struct Pattern_result
 /// - cut lines (solid, class `cut`) on every border edge of a chart: a seam or a
 ///   border of the mesh. Each carries `data-v="i j"`, the indices of the edge's
 ///   vertices in `tm`;
-/// - every seam curve (connected seam edges between the same two charts, or a
-///   cut inside one chart) has a label, drawn on both sides of the seam, so the
-///   pieces can be matched;
+/// - every seam curve (a chain of seam edges between the same two charts, or a
+///   cut inside one chart, from junction to junction) has a label, drawn on
+///   both sides of the seam, so the pieces can be matched;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
 /// - fold lines on interior edges whose dihedral angle exceeds `fold_angle`:
 ///   mountain folds (convex edges) dash-dotted in red, valley folds (concave)
@@ -277,13 +277,21 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
       return std::make_pair((std::min)(a, b), (std::max)(a, b));
     };
+    // a curve runs through vertices with two seam edges only, so every curve is a
+    // simple chain between junctions or ends, and its two sides are two runs of border
+    std::vector<std::size_t> degree(num_vertices(tm), 0);
+    for(halfedge_descriptor h : todo) {
+      ++degree[get(vim, source(h, tm))];
+      ++degree[get(vim, target(h, tm))];
+    }
     for(halfedge_descriptor h : todo) {
       if(curve_of.count(edge(h, tm))) continue;
       const std::size_t id = curves.size();
       curves.emplace_back(1, h);
       curve_of[edge(h, tm)] = id;
       for(std::size_t q = 0; q < curves[id].size(); ++q)
-        for(halfedge_descriptor end : {curves[id][q], opposite(curves[id][q], tm)})
+        for(halfedge_descriptor end : {curves[id][q], opposite(curves[id][q], tm)}) {
+          if(degree[get(vim, target(end, tm))] != 2) continue;
           for(halfedge_descriptor g : CGAL::halfedges_around_target(end, tm)) {
             const edge_descriptor e = edge(g, tm);
             if(!seam.count(e) || curve_of.count(e) || is_border(g, tm) || is_border(opposite(g, tm), tm)) continue;
@@ -291,6 +299,7 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
             curve_of[e] = id;
             curves[id].push_back(g);
           }
+        }
     }
   }
 
