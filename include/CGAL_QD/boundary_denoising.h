@@ -41,6 +41,9 @@ struct Denoising_result
 
 /// \ingroup PkgCGAL_QDRef
 /// moves every vertex on a border between charts toward the planes of its
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
+/// \param out receives the new position of every vertex
 /// charts (paper Section 2, step 3). The faces of the vertex's star take the
 /// normal n_c of their chart (its area-weighted mean face normal), and the
 /// vertex is moved by the update of the paper's reference [38],

@@ -189,6 +189,8 @@ std::size_t remove_ears(const TriangleMesh& tm, const FIM& fim, std::vector<std:
 
 /// \ingroup PkgCGAL_QDRef
 /// moves the border between every two adjacent charts to a minimum cut (paper
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// Section 2, step 2). For charts A and B, the fuzzy band is the set of faces
 /// of A and B whose geodesic distance (along face centroids) to their common
 /// border is at most `w sqrt(min(area(A), area(B)))`; the faces of the band

@@ -606,6 +606,8 @@ std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const
 
 /// \ingroup PkgCGAL_QDRef
 /// merges charts by removing the boundary curves between them (paper Section
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// 4.2). A boundary curve is a maximal chain of edges between the same two
 /// charts. First, every chart that does not itself pass the test below is
 /// split in two (by distance to two far-apart faces) until all pass. Then the

@@ -343,6 +343,8 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 /// (`CGAL::box_self_intersection_d` and exact predicates; the paper rasterises
 /// on a GPU instead).
 ///
+/// \param tm the triangle mesh
+/// \param uv the UV of every vertex
 /// A locally injective, orientation-preserving map whose border polygons are
 /// simple and disjoint is globally one-to-one; so `overlap` (S(Omega)) is set
 /// when a face is flipped, an interior vertex is a branch point (its 1-ring
@@ -394,6 +396,8 @@ Distortion_report<TriangleMesh> face_measures(const TriangleMesh& tm, const Vert
 /// applies to `uv` the similarity (uniform scale about one of its points, no
 /// rotation) that puts the endpoints of the longest border edge at their 3D
 /// distance: the normalisation the paper applies to free-border methods before
+/// \param tm the triangle mesh
+/// \param uv the UV of every vertex
 /// measuring them. Does nothing if `tm` has no border or that edge has zero
 /// length in `uv`.
 /// \param np optional: `vertex_point_map`

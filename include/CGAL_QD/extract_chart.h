@@ -124,6 +124,8 @@ struct Null_output
 /// copies the faces of one chart of `tm` into `out`, cut open along the
 /// chart's border with the other charts and along the edges marked as cut
 /// inside it (the remaining boundary curves of a boundary-based merging, see
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// `Segmentation_result::seam_edges`). A vertex of `tm` gives one vertex of
 /// `out` per wedge: per group of its corners in the chart linked by edges that
 /// are interior to the chart and not cut. `out` is manifold, even where the

@@ -163,6 +163,8 @@ inline double skyline_pack(std::vector<Packing_box>& boxes, double width)
 
 /// \ingroup PkgCGAL_QDRef
 /// packs the flattened charts of a segmentation into the unit square, for a
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// texture atlas. Each chart is rotated to its smallest-area enclosing
 /// rectangle (rotating calipers on its convex hull), the rectangles, with a
 /// margin around each, are sorted by height and placed bottom-left on a

@@ -81,6 +81,8 @@ struct Segmentation_result
 /// \ingroup PkgCGAL_QDRef
 /// segments `tm` into charts that each flatten by LPFB+IP within the
 /// distortion thresholds and without overlap (paper Section 2):
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// 1. `segment_by_error_controlled_vsa()`: nearly planar charts;
 /// 2. `refine_chart_boundaries()`: minimum-cut borders (named parameter `refine_boundaries`, default on);
 /// 3. `denoise_chart_boundaries()` on a copy of the points (`denoise_boundaries`, default off);

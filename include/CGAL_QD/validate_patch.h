@@ -20,6 +20,7 @@ namespace CGAL_QD {
 /// and `flatten_patch()` accept: a connected, manifold triangle mesh of genus 0
 /// with at least one border loop, finite coordinates, no zero-length border edge
 /// and no degenerate face.
+/// \param tm the triangle mesh
 /// \param np optional: `vertex_point_map`, `vertex_index_map`, `face_index_map`
 /// \returns `Error_code::OK` or the first problem found (see `Error_code`).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>

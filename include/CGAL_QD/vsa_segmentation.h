@@ -216,6 +216,8 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm
 /// Variational Shape Approximation (paper Section 2, step 1): starting from one
 /// proxy per connected component, proxies are added where the L2,1 error is
 /// worst, each addition followed by relaxation, until every chart's normalised
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// L2,1 error is at most the tolerance. Adjacent charts whose union is still
 /// within the tolerance are then merged, cheapest first (incremental seeding
 /// can split one planar region). Writes a chart id in `[0, n)` per face.

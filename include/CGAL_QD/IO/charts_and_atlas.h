@@ -52,6 +52,9 @@ inline std::array<unsigned char, 3> chart_color(std::size_t chart)
 
 /// \ingroup PkgCGAL_QDRef
 /// writes `tm` as an ASCII PLY file with, per face, `red`, `green`, `blue`
+/// \param out the stream written to
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// (`uchar`, from `chart_color()`) and `chart` (`int`). CGAL's PLY reader loads
 /// them back into a `Surface_mesh` as the face maps `"f:color"` and `"f:chart"`.
 ///
@@ -95,6 +98,11 @@ bool write_PLY_with_charts(std::ostream& out, const TriangleMesh& tm, const Face
 /// \ingroup PkgCGAL_QDRef
 /// writes `tm` as an OBJ file with one `vt` per distinct (vertex, UV) pair, so
 /// a vertex on a seam gets one texture coordinate per chart that meets there.
+/// \param out the stream written to
+/// \param tm the triangle mesh
+/// \param corner_uv 3 UVs per face by face index
+/// \param material_library the `.mtl` file named by `mtllib` (used only with a material)
+/// \param material the material named by `usemtl`, or empty for none
 /// `corner_uv` holds 3 UVs per face by face index (`Segmentation_result::corner_uv`
 /// or `Atlas_result::corner_uv`): the k-th is that of the target of the k-th
 /// halfedge of the face, from `halfedge(f, tm)`. With a non-empty `material`,

@@ -98,6 +98,10 @@ struct Pattern_result
 /// \ingroup PkgCGAL_QDRef
 /// writes the flattened charts as a printable SVG pattern at true scale:
 ///
+/// \param out the stream written to
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
+/// \param options the drawing options
 /// - each chart is turned to its smallest enclosing rectangle and the charts are
 ///   placed in rows on pages of `page_width` x `page_height` (stacked downwards
 ///   in one SVG, each page framed and numbered), turned by 90 degrees when that

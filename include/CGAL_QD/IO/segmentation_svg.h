@@ -47,6 +47,10 @@ struct Picture_options
 /// (painter's algorithm), each followed by its seam edges in black, so nearer
 /// faces hide farther seams.
 ///
+/// \param out the stream written to
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
+/// \param options the drawing options
 /// \param seam_edges the edges to draw in black (`Segmentation_result::seam_edges`)
 /// \param np optional: `vertex_point_map`, `vertex_index_map`
 /// \returns `OK`; `EMPTY_MESH` without faces, `INVALID_COORDINATES` for a non-finite point
