@@ -14,7 +14,7 @@
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
-//                     [--max-stretch 2.0] [--denoise] [--no-refine] [--no-merge]
+//                     [--max-stretch 2.0] [--denoise | --no-denoise] [--no-refine] [--no-merge]
 //                     [--merge-order largest|smallest|relative] [--sequential]
 //                     [--json] [--verbose] [--quiet]
 
@@ -53,7 +53,7 @@ int usage()
 {
   std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter] [--tabs]\n"
                "                    [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
-               "                    [--denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
+               "                    [--denoise | --no-denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
                "                    [--sequential] [--json] [--verbose] [--quiet]\n";
   return EXIT_FAILURE;
 }
@@ -121,6 +121,7 @@ int main(int argc, char** argv)
     else if(a == "--verbose") verbose = true;
     else if(a == "--quiet") quiet = true;
     else if(a == "--denoise") denoise = true;
+    else if(a == "--no-denoise") denoise = false;  // the default
     else if(a == "--no-refine") refine = false;
     else if(a == "--no-merge") merge = false;
     else if(a == "--sequential") sequential = true;
