@@ -8,8 +8,11 @@
 // (every chart flattened and packed into the unit square), patterns.svg
 // (every chart at true scale on pages, to print and cut) and segmentation.svg
 // (a picture of the mesh in its chart colours) and report.json (what --json
-// prints). Polygon faces are triangulated and degenerate faces removed, and the
-// summary says so. On a terminal a progress bar runs on standard error unless
+// prints). The mesh is read and repaired by CGAL_QD::IO::read_and_repair_mesh()
+// (duplicated points merged, orientation made consistent, non-manifold
+// vertices split, polygons triangulated, degenerate faces removed), and the
+// summary says what was repaired; a file that cannot be used gives a message
+// saying why, exit code 1 and no output file. On a terminal a progress bar runs on standard error unless
 // --quiet.
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
@@ -20,16 +23,13 @@
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
 #include <CGAL_QD/IO/patterns_svg.h>
+#include <CGAL_QD/IO/read_mesh.h>
 #include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -76,9 +76,14 @@ std::string number(double x)
 }
 
 template <class Result>
-void print_json(std::ostream& out, const Result& r)
+void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report& input)
 {
   out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": " << r.number_of_faces
+            << ", \"repairs\": [";
+  const std::vector<std::string> repairs = input.repairs();
+  for(std::size_t k = 0; k < repairs.size(); ++k) out << (k ? ", " : "") << '"' << repairs[k] << '"';
+  out << "], \"connected_components\": " << input.result.connected_components
+            << ", \"needle_faces\": " << input.result.needle_faces
             << ", \"charts_after_vsa\": " << r.charts_after_vsa
             << ", \"charts_after_refinement\": " << r.charts_after_refinement
             << ", \"charts_before_merging\": " << r.charts_before_merging << ", \"charts\": " << r.number_of_charts
@@ -150,33 +155,19 @@ int main(int argc, char** argv)
     else return usage();
   }
 
+  // reading and repairs in one place: say what was repaired, or what is wrong
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(path, mesh) || faces(mesh).empty()) {
-    std::cerr << "segment_mesh: cannot read a polygon mesh from '" << path << "'\n";
+  const CGAL_QD::Repair_report input = CGAL_QD::IO::read_and_repair_mesh(path, mesh);
+  if(!input) {
+    std::cerr << "segment_mesh: cannot use '" << path << "': " << input.message << " ("
+              << CGAL_QD::error_message(input.status) << ")\n";
     return EXIT_FAILURE;
   }
-  // repairs: polygons become triangles, degenerate faces go; say what was done
   std::string repaired;
-  if(!CGAL::is_triangle_mesh(mesh)) {
-    const std::size_t before = num_faces(mesh);
-    if(!CGAL::Polygon_mesh_processing::triangulate_faces(mesh)) {
-      std::cerr << "segment_mesh: '" << path << "' has polygons that cannot be triangulated\n";
-      return EXIT_FAILURE;
-    }
-    repaired += "  repaired       " + std::to_string(before) + " polygons triangulated into " +
-                std::to_string(num_faces(mesh)) + " triangles\n";
-  }
-  {
-    const std::size_t before = num_faces(mesh);
-    CGAL::Polygon_mesh_processing::remove_degenerate_faces(mesh);
-    mesh.collect_garbage();
-    if(num_faces(mesh) != before)
-      repaired += "  repaired       " + std::to_string(before - num_faces(mesh)) + " degenerate faces removed\n";
-    if(faces(mesh).empty()) {
-      std::cerr << "segment_mesh: every face of '" << path << "' is degenerate\n";
-      return EXIT_FAILURE;
-    }
-  }
+  for(const std::string& line : input.repairs()) repaired += "  repaired       " + line + "\n";
+  if(input.result.needle_faces > 0)
+    repaired += "  warning        " + std::to_string(input.result.needle_faces) +
+                " needle faces (longest edge over 1000 times the shortest) are kept\n";
   // a progress bar on a terminal
   const bool bar = !quiet && !json && !verbose && isatty(fileno(stderr));
   auto progress = [&](const char* step, double done) {
@@ -214,7 +205,7 @@ int main(int argc, char** argv)
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(mesh, chart, r.corner_uv);
     std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg"),
         picture(dir / "segmentation.svg"), report(dir / "report.json");
-    print_json(report, r);
+    print_json(report, r, input);
     const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
                     CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
                     (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
@@ -234,7 +225,7 @@ int main(int argc, char** argv)
     written = message.str();
   }
   if(json) {
-    print_json(std::cout, r);
+    print_json(std::cout, r, input);
     return r ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   if(!r) {

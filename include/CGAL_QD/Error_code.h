@@ -27,7 +27,10 @@ enum class Error_code {
   DEGENERATE_EDGE,         ///< a border edge has zero length
   DEGENERATE_FACE,         ///< a face has zero area (collinear or coincident corners)
   SOLVER_FAILED,           ///< a numerical solve failed or produced non-finite values
-  NOT_CONVERGED            ///< the iteration limit was reached before the tolerance
+  NOT_CONVERGED,           ///< the iteration limit was reached before the tolerance
+  CANNOT_OPEN_FILE,        ///< the file does not exist or cannot be read
+  INVALID_FILE,            ///< the file is empty, of an unknown format, truncated or malformed
+  INVALID_INDEX            ///< a polygon refers to a point that does not exist
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -50,6 +53,10 @@ inline const char* error_message(Error_code code)
     case Error_code::DEGENERATE_FACE: return "the mesh has a degenerate (zero-area) face";
     case Error_code::SOLVER_FAILED: return "a numerical solve failed";
     case Error_code::NOT_CONVERGED: return "the iteration limit was reached before convergence";
+    case Error_code::CANNOT_OPEN_FILE: return "the file does not exist or cannot be opened";
+    case Error_code::INVALID_FILE:
+      return "the file is not a valid mesh file (empty, unknown format, truncated, wrong counts or unreadable numbers)";
+    case Error_code::INVALID_INDEX: return "a polygon refers to a point that does not exist";
   }
   return "unknown error code";
 }

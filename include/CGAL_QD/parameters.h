@@ -32,6 +32,7 @@ struct merge_order_t {};
 struct atlas_margin_t {};
 struct max_area_distortion_t {};
 struct max_l2_stretch_t {};
+struct needle_threshold_t {};
 
 } // namespace internal_np
 
@@ -91,6 +92,9 @@ CGAL_QD_ADD_NAMED_PARAMETER(merge_charts)
 CGAL_QD_ADD_NAMED_PARAMETER(max_area_distortion)
 /// the largest L2 stretch of an accepted chart. Default: 2.0, the paper's threshold.
 CGAL_QD_ADD_NAMED_PARAMETER(max_l2_stretch)
+/// the ratio of the longest to the shortest edge above which `inspect_mesh()`
+/// counts a triangle as a needle. Default: 1000.
+CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)
 
 /// border edges of a UV map closer than this fraction of the diagonal of the
 /// border's UV bounding box touch rather than cross (see `compute_distortion()`).

@@ -1,0 +1,77 @@
+cmake_policy(SET CMP0007 NEW)
+# Runs segment_mesh (PROGRAM) on malformed mesh files written into WORK_DIR and
+# checks, for each, a non-zero exit code, a message naming the problem on
+# standard error, and that nothing was written.
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+
+set(good_vertices "0 0 0\n1 0 0\n1 1 0\n0 1 0\n")
+set(cases
+  "empty.off||is empty"
+  "blank.off|\n\n# only a comment\n|is empty"
+  "header.off|PLY\n4 2 0\n|not an OFF header"
+  "counts.off|OFF\nfour two zero\n|counts are not"
+  "negative.off|OFF\n-4 2 0\n|counts are not"
+  "truncated_vertices.off|OFF\n4 2 0\n0 0 0\n1 0 0\n|truncated"
+  "truncated_faces.off|OFF\n4 2 0\n${good_vertices}3 0 1 2\n|truncated"
+  "more_faces.off|OFF\n4 5 0\n${good_vertices}3 0 1 2\n3 0 2 3\n|truncated"
+  "huge_counts.off|OFF\n99999999999999 99999999999999 0\n0 0 0\n|truncated"
+  "huge_face.off|OFF\n4 1 0\n${good_vertices}4000000000 0 1 2\n|number of corners"
+  "garbage_number.off|OFF\n4 2 0\n0 0 0\n1 zz 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n|is not a number"
+  "garbage_index.off|OFF\n4 2 0\n${good_vertices}3 0 1 q\n3 0 2 3\n|is not a vertex index"
+  "index_out_of_range.off|OFF\n4 2 0\n${good_vertices}3 0 1 9\n3 0 2 3\n|out of range"
+  "nan.off|OFF\n4 2 0\n0 0 0\n1 nan 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n|NaN or infinite"
+  "overflow.off|OFF\n4 2 0\n0 0 0\n1 1e999 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n|NaN or infinite"
+  "point_cloud.off|OFF\n4 0 0\n${good_vertices}|no face"
+  "collinear.off|OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n|degenerate"
+  "repeated_corners.off|OFF\n4 2 0\n${good_vertices}3 0 0 1\n3 2 2 2\n|3 distinct corners"
+  "truncated.ply|ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n|truncated"
+  "no_end_header.ply|ply\nformat ascii 1.0\nelement vertex 3\n|end_header"
+  "garbage.stl|solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 zz\n|no face"
+  "bad_index.obj|v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 9\n|OBJ"
+  "unknown.xyz|0 0 0\n|extension"
+)
+set(failures 0)
+foreach(case IN LISTS cases)
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 content)
+  list(GET parts 2 expected)
+  string(REPLACE "\\n" "\n" content "${content}")
+  file(WRITE "${WORK_DIR}/${name}" "${content}")
+  set(out "${WORK_DIR}/out_${name}")
+  execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/${name}" --out-dir "${out}" --quiet
+                  RESULT_VARIABLE code OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr TIMEOUT 60)
+  set(problem "")
+  if(code EQUAL 0)
+    set(problem "exit code 0")
+  elseif(NOT code EQUAL 1)
+    set(problem "exit code '${code}' (a crash or a timeout?)")
+  elseif(NOT stderr MATCHES "segment_mesh: cannot use")
+    set(problem "no message on standard error")
+  elseif(NOT stderr MATCHES "${expected}")
+    set(problem "the message does not say '${expected}'")
+  elseif(EXISTS "${out}")
+    set(problem "an output directory was written")
+  endif()
+  if(problem)
+    math(EXPR failures "${failures} + 1")
+    message("FAILED ${name}: ${problem}\n  stderr: ${stderr}")
+  else()
+    string(STRIP "${stderr}" stderr)
+    message("ok     ${name}: ${stderr}")
+  endif()
+endforeach()
+# a missing file
+execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/missing.off" --out-dir "${WORK_DIR}/out_missing"
+                RESULT_VARIABLE code ERROR_VARIABLE stderr)
+if(NOT code EQUAL 1 OR NOT stderr MATCHES "does not exist" OR EXISTS "${WORK_DIR}/out_missing")
+  math(EXPR failures "${failures} + 1")
+  message("FAILED missing.off: exit code ${code}, stderr: ${stderr}")
+else()
+  message("ok     missing.off")
+endif()
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} malformed files were not refused cleanly")
+endif()

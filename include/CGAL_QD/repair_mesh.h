@@ -1,0 +1,377 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_REPAIR_MESH_H
+#define CGAL_QD_REPAIR_MESH_H
+
+/// \file repair_mesh.h
+/// Input validation and repair in one place. `inspect_mesh()` reports what is
+/// wrong with a face graph without changing it; `repair_polygon_soup_to_mesh()`
+/// turns a polygon soup (what every file format holds) into a triangle mesh that
+/// the algorithms of CGAL_QD accept, with CGAL's Polygon Mesh Processing, and
+/// says what it repaired. `IO::read_and_repair_mesh()` (IO/read_mesh.h) reads a
+/// file and calls it.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/internal/validation.h>
+#include <CGAL_QD/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// What `inspect_mesh()` found in a face graph. `status` is the first problem
+/// that the algorithms of CGAL_QD refuse (`EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
+/// `INVALID_COORDINATES`, `DEGENERATE_FACE`), or `OK`; the other counts are
+/// facts a user may want to know (non-manifold vertices, needles, several
+/// components are accepted by `segment_quasi_developable()`).
+struct Mesh_inspection
+{
+  Error_code status = Error_code::OK;
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_faces = 0;
+  std::size_t non_triangle_faces = 0;
+  std::size_t non_finite_vertices = 0;   ///< a NaN or infinite coordinate
+  std::size_t non_manifold_vertices = 0; ///< several umbrellas meet at the vertex
+  std::size_t degenerate_faces = 0;      ///< triangles with collinear corners (exact predicate)
+  std::size_t needle_faces = 0;          ///< triangles whose longest edge exceeds `needle_threshold` times the shortest
+  std::size_t isolated_vertices = 0;     ///< vertices without a face
+  std::size_t duplicated_vertices = 0;   ///< vertices at the position of another vertex
+  std::size_t connected_components = 0;  ///< through edges
+  std::size_t border_loops = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+/// What `repair_polygon_soup_to_mesh()` did. The counts are those of the
+/// repairs made; `result` inspects the mesh written. When `status` is not `OK`,
+/// `message` says what is wrong in words a user understands.
+struct Repair_report
+{
+  Error_code status = Error_code::OK;
+  std::string message;
+  std::size_t points_read = 0;
+  std::size_t polygons_read = 0;
+  std::size_t duplicate_points_merged = 0;        ///< points at the position of an earlier point
+  std::size_t invalid_polygons_removed = 0;       ///< fewer than 3 distinct corners, or a corner repeated
+  std::size_t duplicate_polygons_removed = 0;     ///< polygons with the same corners as another
+  std::size_t isolated_points_removed = 0;        ///< points that no polygon uses
+  std::size_t polygons_reoriented = 0;            ///< reversed to agree with their neighbours
+  std::size_t non_manifold_vertices_duplicated = 0; ///< points added to make vertices and edges manifold
+  std::size_t polygons_triangulated = 0;          ///< faces with more than 3 corners
+  std::size_t triangles_added = 0;                ///< by the triangulation of those faces
+  std::size_t degenerate_faces_removed = 0;       ///< zero-area triangles collapsed
+  Mesh_inspection result;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+
+  /// one sentence per kind of repair made, for a user
+  std::vector<std::string> repairs() const
+  {
+    std::vector<std::string> out;
+    auto add = [&out](std::size_t n, const char* one, const char* many) {
+      if(n > 0) out.push_back(std::to_string(n) + " " + (n == 1 ? one : many));
+    };
+    add(duplicate_points_merged, "duplicated point merged", "duplicated points merged");
+    add(invalid_polygons_removed, "polygon with repeated corners removed", "polygons with repeated corners removed");
+    add(duplicate_polygons_removed, "duplicated polygon removed", "duplicated polygons removed");
+    add(isolated_points_removed, "isolated point removed", "isolated points removed");
+    add(polygons_reoriented, "polygon reoriented to agree with its neighbours",
+        "polygons reoriented to agree with their neighbours");
+    add(non_manifold_vertices_duplicated, "point duplicated to make the mesh manifold",
+        "points duplicated to make the mesh manifold");
+    if(polygons_triangulated > 0)
+      out.push_back(std::to_string(polygons_triangulated) + (polygons_triangulated == 1 ? " polygon" : " polygons") +
+                    " triangulated (" + std::to_string(triangles_added) +
+                    (triangles_added == 1 ? " triangle added)" : " triangles added)"));
+    add(degenerate_faces_removed, "degenerate face removed", "degenerate faces removed");
+    return out;
+  }
+};
+
+namespace internal {
+
+template <class TriangleMesh>
+void collect_garbage_if_any(TriangleMesh&) {}
+
+template <class P>
+void collect_garbage_if_any(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
+
+template <class Point>
+bool is_finite_point(const Point& p)
+{
+  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+         std::isfinite(CGAL::to_double(p.z()));
+}
+
+// Removes cyclically repeated consecutive corners; a polygon left with fewer
+// than 3 corners or with a corner twice is removed. Returns the number removed.
+template <class PolygonRange>
+std::size_t remove_invalid_polygons(PolygonRange& polygons)
+{
+  std::size_t removed = 0, kept = 0;
+  for(std::size_t i = 0; i < polygons.size(); ++i) {
+    auto polygon = polygons[i];
+    polygon.erase(std::unique(polygon.begin(), polygon.end()), polygon.end());
+    while(polygon.size() > 1 && polygon.front() == polygon.back()) polygon.pop_back();
+    auto sorted = polygon;
+    std::sort(sorted.begin(), sorted.end());
+    if(polygon.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      ++removed;
+      continue;
+    }
+    polygons[kept++] = polygon;
+  }
+  polygons.resize(kept);
+  return removed;
+}
+
+} // namespace internal
+
+/// reports what is wrong with a face graph, without changing it.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \param tm the mesh
+/// \param np optional named parameters: `CGAL::parameters::vertex_point_map`,
+///   `CGAL::parameters::vertex_index_map`, `CGAL::parameters::face_index_map`,
+///   `CGAL_QD::parameters::needle_threshold` (default 1000).
+/// \returns the counts; `status` is the first problem (in the order empty, not
+///   triangles, non-finite coordinates, degenerate faces) that the algorithms of
+///   CGAL_QD refuse.
+template <class FaceGraph, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Mesh_inspection inspect_mesh(const FaceGraph& tm, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<FaceGraph> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  const double needle = choose_parameter(get_parameter(np, internal_np::needle_threshold_t()), 1000.);
+  typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
+  const typename CGAL::Kernel_traits<Point>::Kernel::Collinear_3 collinear =
+      typename CGAL::Kernel_traits<Point>::Kernel().collinear_3_object();
+
+  Mesh_inspection r;
+  r.number_of_vertices = num_vertices(tm);
+  r.number_of_faces = num_faces(tm);
+
+  // a vertex is non-manifold when the umbrella around halfedge(v) misses some
+  // of its incoming halfedges, or holds two border halfedges (the test of
+  // PMP::is_non_manifold_vertex, which scans the whole mesh for every vertex)
+  std::vector<std::size_t> incoming(r.number_of_vertices, 0);
+  for(const halfedge_descriptor h : halfedges(tm)) ++incoming[get(vim, target(h, tm))];
+  std::vector<std::array<double, 3>> xyz;
+  xyz.reserve(r.number_of_vertices);
+  for(const auto v : vertices(tm)) {
+    const auto p = internal::point_of<FaceGraph>(v, vpm);
+    xyz.push_back(p);
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) ++r.non_finite_vertices;
+    if(halfedge(v, tm) == GT::null_halfedge()) {
+      ++r.isolated_vertices;
+      continue;
+    }
+    std::size_t around = 0, borders = 0;
+    for(const halfedge_descriptor h : CGAL::halfedges_around_target(v, tm)) {
+      ++around;
+      if(CGAL::is_border(h, tm)) ++borders;
+    }
+    if(around != incoming[get(vim, v)] || borders > 1) ++r.non_manifold_vertices;
+  }
+  {
+    std::vector<std::array<double, 3>> sorted = xyz;
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t i = 1; i < sorted.size(); ++i)
+      if(sorted[i] == sorted[i - 1]) ++r.duplicated_vertices;
+  }
+  for(const auto f : faces(tm)) {
+    const halfedge_descriptor h = halfedge(f, tm);
+    if(CGAL::halfedges_around_face(h, tm).size() != 3) {
+      ++r.non_triangle_faces;
+      continue;
+    }
+    const auto& p = get(vpm, source(h, tm));
+    const auto& q = get(vpm, target(h, tm));
+    const auto& s = get(vpm, target(next(h, tm), tm));
+    if(!internal::is_finite_point(p) || !internal::is_finite_point(q) || !internal::is_finite_point(s)) continue;
+    if(collinear(p, q, s)) {
+      ++r.degenerate_faces;
+      continue;
+    }
+    double shortest = HUGE_VAL, longest = 0;
+    for(const halfedge_descriptor e : CGAL::halfedges_around_face(h, tm)) {
+      const double l = internal::distance3(xyz[get(vim, source(e, tm))], xyz[get(vim, target(e, tm))]);
+      shortest = (std::min)(shortest, l);
+      longest = (std::max)(longest, l);
+    }
+    if(longest > needle * shortest) ++r.needle_faces;
+  }
+  // components through edges, and border loops
+  std::vector<char> seen(r.number_of_faces, 0);
+  std::vector<typename GT::face_descriptor> stack;
+  for(const auto f : faces(tm)) {
+    if(seen[get(fim, f)]) continue;
+    ++r.connected_components;
+    seen[get(fim, f)] = 1;
+    stack.assign(1, f);
+    while(!stack.empty()) {
+      const auto g = stack.back();
+      stack.pop_back();
+      for(const halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(g, tm), tm)) {
+        const auto n = face(opposite(h, tm), tm);
+        if(n != GT::null_face() && !seen[get(fim, n)]) {
+          seen[get(fim, n)] = 1;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  std::vector<char> on_loop(num_halfedges(tm), 0);
+  for(const halfedge_descriptor h : halfedges(tm)) {
+    if(!CGAL::is_border(h, tm) || on_loop[get(him, h)]) continue;
+    ++r.border_loops;
+    halfedge_descriptor g = h;
+    do {
+      on_loop[get(him, g)] = 1;
+      g = next(g, tm);
+    } while(g != h && !on_loop[get(him, g)]);
+  }
+
+  if(r.number_of_faces == 0) r.status = Error_code::EMPTY_MESH;
+  else if(r.non_triangle_faces > 0) r.status = Error_code::NOT_TRIANGLE_MESH;
+  else if(r.non_finite_vertices > 0) r.status = Error_code::INVALID_COORDINATES;
+  else if(r.degenerate_faces > 0) r.status = Error_code::DEGENERATE_FACE;
+  return r;
+}
+
+/// turns a polygon soup into a triangle mesh that the algorithms of CGAL_QD
+/// accept, repairing what CGAL's Polygon Mesh Processing can repair, in this
+/// order: points at the same position are merged; polygons with fewer than 3
+/// distinct corners are removed, then duplicated polygons and unused points;
+/// the soup is oriented consistently, duplicating the points where it is not
+/// manifold (`orient_polygon_soup()`); polygons with more than 3 corners are
+/// triangulated; zero-area triangles are removed (`remove_degenerate_faces()`)
+/// with the vertices they leave isolated.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph`
+/// \param points the points; taken by value because the repairs change them
+/// \param polygons each a sequence of indices into `points`
+/// \param pm the output mesh; it is cleared first, and left empty on failure
+/// \param np optional named parameters: `CGAL::parameters::vertex_point_map`
+///   of `pm`, `CGAL_QD::parameters::needle_threshold` (for the inspection).
+/// \returns the repairs made; on failure `status` is `EMPTY_MESH` (no polygon,
+///   or none left), `INVALID_INDEX`, `INVALID_COORDINATES` (a NaN or infinite
+///   coordinate), `NON_MANIFOLD` (the soup could not be made a mesh),
+///   `NOT_TRIANGLE_MESH` (a polygon could not be triangulated) or
+///   `DEGENERATE_FACE` (a zero-area face could not be removed), and `message`
+///   says more.
+template <class PolygonMesh, class Point, class Polygon,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector<Polygon> polygons, PolygonMesh& pm,
+                                          const NamedParameters& np = CGAL::parameters::default_values())
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  Repair_report r;
+  CGAL::clear(pm);
+  r.points_read = points.size();
+  r.polygons_read = polygons.size();
+  auto fail = [&r, &pm](Error_code code, const std::string& message) {
+    r.status = code;
+    r.message = message;
+    CGAL::clear(pm);
+    return r;
+  };
+  if(polygons.empty()) return fail(Error_code::EMPTY_MESH, "the input has no polygon");
+  for(std::size_t i = 0; i < polygons.size(); ++i)
+    for(const auto id : polygons[i])
+      if(static_cast<std::size_t>(id) >= points.size())
+        return fail(Error_code::INVALID_INDEX, "polygon " + std::to_string(i) + " refers to point " +
+                                                   std::to_string(static_cast<std::size_t>(id)) + " but there are " +
+                                                   std::to_string(points.size()) + " points");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(!internal::is_finite_point(points[i]))
+      return fail(Error_code::INVALID_COORDINATES, "point " + std::to_string(i) + " has a NaN or infinite coordinate");
+
+  r.duplicate_points_merged = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  r.invalid_polygons_removed = internal::remove_invalid_polygons(polygons);
+  r.duplicate_polygons_removed = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+  r.isolated_points_removed = PMP::remove_isolated_points_in_polygon_soup(points, polygons);
+  if(polygons.empty()) return fail(Error_code::EMPTY_MESH, "no polygon has 3 distinct corners");
+
+  // orientation: count the polygons whose corner order the orientation reversed
+  {
+    const std::size_t before = points.size();
+    std::vector<std::array<Point, 2>> first_edge;
+    first_edge.reserve(polygons.size());
+    for(const auto& polygon : polygons) first_edge.push_back({points[polygon[0]], points[polygon[1]]});
+    PMP::orient_polygon_soup(points, polygons);
+    r.non_manifold_vertices_duplicated = points.size() - before;
+    for(std::size_t i = 0; i < polygons.size(); ++i) {
+      const auto& polygon = polygons[i];
+      const std::size_t n = polygon.size();
+      for(std::size_t k = 0; k < n; ++k)
+        if(points[polygon[k]] == first_edge[i][1] && points[polygon[(k + 1) % n]] == first_edge[i][0]) {
+          ++r.polygons_reoriented;
+          break;
+        }
+    }
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    return fail(Error_code::NON_MANIFOLD, "the polygons cannot be made a manifold mesh");
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, pm, CGAL::parameters::default_values(), np);
+
+  if(!CGAL::is_triangle_mesh(pm)) {
+    const std::size_t before = num_faces(pm);
+    for(const auto f : faces(pm))
+      if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 3) ++r.polygons_triangulated;
+    if(!PMP::triangulate_faces(pm, np))
+      return fail(Error_code::NOT_TRIANGLE_MESH, "a polygon could not be triangulated");
+    r.triangles_added = num_faces(pm) - before;
+  }
+  {
+    const Mesh_inspection before = inspect_mesh(pm, np);
+    if(before.degenerate_faces > 0) {
+      PMP::remove_degenerate_faces(pm, np);
+      internal::collect_garbage_if_any(pm);
+      PMP::remove_isolated_vertices(pm);
+      internal::collect_garbage_if_any(pm);
+      const Mesh_inspection after = inspect_mesh(pm, np);
+      if(after.degenerate_faces > 0)
+        return fail(Error_code::DEGENERATE_FACE,
+                    std::to_string(after.degenerate_faces) + " degenerate (zero-area) faces could not be removed");
+      r.degenerate_faces_removed = before.number_of_faces - after.number_of_faces;
+      if(after.number_of_faces == 0) return fail(Error_code::EMPTY_MESH, "every face is degenerate");
+    }
+  }
+  r.result = inspect_mesh(pm, np);
+  if(!r.result) return fail(r.result.status, error_message(r.result.status));
+  return r;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_REPAIR_MESH_H

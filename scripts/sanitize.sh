@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Builds the unit tests with AddressSanitizer (leaks included) and
+# UndefinedBehaviorSanitizer, CGAL's and Eigen's assertions on, in a build
+# directory of its own, and runs them; any report fails the run. CI runs it
+# after scripts/test.sh (which installs the dependencies).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${CGAL_QD_SANITIZE_DIR:-build-sanitize}
+flags="-O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
+      -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
+      -DCGAL_QD_BUILD_TESTS=ON -DBUILD_TESTING=ON -DCGAL_QD_BUILD_EXAMPLES=OFF \
+      -DCGAL_QD_BUILD_BENCHMARK=OFF -DCGAL_QD_BUILD_SWEEP=OFF
+cmake --build "$build" -j "$(nproc)"
+cd "$build"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:check_initialization_order=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest -L unit --output-on-failure --no-tests=error -j "$(nproc)"

@@ -1,0 +1,198 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One mesh of the robustness sweep: reads and repairs the file, flattens the
+// largest disk-like patch (the largest connected component when it is a disk
+// with or without holes, otherwise a disk grown breadth-first from its first
+// face over half its area), then segments the whole mesh. Prints one Markdown
+// table row (or, with --header, the table's header).
+//
+// The exit code is 0 when every target holds: the mesh is either used or
+// refused with a named status, and nothing is NaN, no final chart overlaps.
+// It is 1 when a target is missed (the row says which), 2 on an exception.
+//
+// usage: sweep_mesh <mesh> | sweep_mesh --header
+
+#include "disk_patches.h"
+
+#include <CGAL_QD/IO/read_mesh.h>
+#include <CGAL_QD/distortion.h>
+#include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/validate_patch.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+
+namespace {
+
+std::string fixed(double x, int digits)
+{
+  if(!std::isfinite(x)) return "NaN";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
+  return buffer;
+}
+
+double elapsed_ms(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+// the faces of the largest component (by area)
+std::vector<face_descriptor> largest_component(const Mesh& tm)
+{
+  std::vector<int> component(num_faces(tm), -1);
+  std::vector<double> area;
+  std::vector<std::vector<face_descriptor>> members;
+  for(const face_descriptor f : faces(tm)) {
+    if(component[f.idx()] >= 0) continue;
+    const int c = static_cast<int>(area.size());
+    area.push_back(0);
+    members.emplace_back();
+    std::vector<face_descriptor> stack(1, f);
+    component[f.idx()] = c;
+    while(!stack.empty()) {
+      const face_descriptor g = stack.back();
+      stack.pop_back();
+      members[c].push_back(g);
+      area[c] += CGAL::Polygon_mesh_processing::face_area(g, tm);
+      for(const auto h : CGAL::halfedges_around_face(halfedge(g, tm), tm)) {
+        const face_descriptor n = face(opposite(h, tm), tm);
+        if(n != Mesh::null_face() && component[n.idx()] < 0) {
+          component[n.idx()] = c;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  std::size_t best = 0;
+  for(std::size_t c = 1; c < area.size(); ++c)
+    if(area[c] > area[best]) best = c;
+  std::sort(members[best].begin(), members[best].end());
+  return members[best];
+}
+
+bool finite_uv(const std::vector<std::array<double, 2>>& uv)
+{
+  for(const auto& p : uv)
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1])) return false;
+  return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc == 2 && std::string(argv[1]) == "--header") {
+    std::cout << "| mesh | faces | repairs | patch faces | loops | flattening | A % | L² | flips | overlap | Π_L | "
+                 "flatten s | segmentation | charts | max A % | max L² | overlapping | segment s | total s | targets |\n"
+              << "|---|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
+    return EXIT_SUCCESS;
+  }
+  if(argc != 2) {
+    std::cerr << "usage: sweep_mesh <mesh> | sweep_mesh --header\n";
+    return EXIT_FAILURE;
+  }
+  const std::string path = argv[1];
+  const std::string name = std::filesystem::path(path).filename().string();
+  const auto start = std::chrono::steady_clock::now();
+  std::ostringstream row;
+  std::vector<std::string> missed;
+  try {
+    Mesh tm;
+    const CGAL_QD::Repair_report input = CGAL_QD::IO::read_and_repair_mesh(path, tm);
+    if(!input) {
+      row << "| " << name << " | – | " << input.message << " | – | – | – | – | – | – | – | – | – | "
+          << CGAL_QD::error_message(input.status) << " | – | – | – | – | – | " << fixed(elapsed_ms(start) / 1000, 2)
+          << " | met |";
+      std::cout << row.str() << "\n";
+      return EXIT_SUCCESS;
+    }
+    std::string repairs;
+    for(const std::string& r : input.repairs()) repairs += (repairs.empty() ? "" : "; ") + r;
+    row << "| " << name << " | " << num_faces(tm) << " | " << (repairs.empty() ? std::string("none") : repairs)
+        << " | ";
+
+    // the largest disk-like patch
+    const std::vector<face_descriptor> component = largest_component(tm);
+    Mesh patch;
+    qd_test::copy_faces(tm, component, patch);
+    if(CGAL_QD::validate_patch(patch) != CGAL_QD::Error_code::OK) {
+      double area = 0;
+      for(const face_descriptor f : component) area += CGAL::Polygon_mesh_processing::face_area(f, tm);
+      const auto grown = qd_test::grow_disk(tm, component.front(), component.size(), area / 2);
+      qd_test::copy_faces(tm, grown.faces, patch);
+    }
+    auto uv = patch.add_property_map<Mesh::Vertex_index, K::Point_2>("v:uv").first;
+    const auto flatten_start = std::chrono::steady_clock::now();
+    const CGAL_QD::Flattening_result flat = CGAL_QD::flatten_patch(patch, uv);
+    const double flatten_s = elapsed_ms(flatten_start) / 1000;  // the measures are not included
+    std::size_t loops = 0;
+    {
+      std::vector<char> seen(num_halfedges(patch), 0);
+      for(const auto h : halfedges(patch))
+        if(is_border(h, patch) && !seen[h.idx()]) {
+          ++loops;
+          for(const auto g : CGAL::halfedges_around_face(h, patch)) seen[g.idx()] = 1;
+        }
+    }
+    row << num_faces(patch) << " | " << loops << " | " << CGAL_QD::error_message(flat.status) << " | ";
+    if(flat) {
+      const auto d = CGAL_QD::compute_distortion(patch, uv);
+      bool nan = false;
+      for(const auto v : vertices(patch)) nan = nan || !std::isfinite(uv[v].x()) || !std::isfinite(uv[v].y());
+      if(nan || !std::isfinite(d.area_distortion) || !std::isfinite(d.l2_stretch)) missed.push_back("NaN in the flattening");
+      row << fixed(d.area_distortion, 2) << " | " << fixed(d.l2_stretch, 3) << " | " << d.flipped_faces << " | "
+          << (d.overlap ? "yes" : "no") << " | " << (d.boundary_length_error < 1e-12 ? std::string("< 1e-12") : fixed(d.boundary_length_error, 14)) << " | ";
+    }
+    else
+      row << "– | – | – | – | – | ";
+    row << fixed(flatten_s, 2) << " | ";
+
+    // the whole mesh
+    auto chart = tm.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
+    const CGAL_QD::Segmentation_result<Mesh> s = CGAL_QD::segment_quasi_developable(tm, chart);
+    row << CGAL_QD::error_message(s.status) << " | ";
+    if(s) {
+      if(!finite_uv(s.corner_uv) || !std::isfinite(s.max_area_distortion) || !std::isfinite(s.max_l2_stretch))
+        missed.push_back("NaN in the segmentation");
+      if(s.overlapping_charts > 0) missed.push_back("overlapping charts");
+      row << s.number_of_charts << " | " << fixed(s.max_area_distortion, 2) << " | " << fixed(s.max_l2_stretch, 3)
+          << " | " << s.overlapping_charts << " | ";
+    }
+    else
+      row << "– | – | – | – | ";
+    row << fixed(s.time_total_ms / 1000, 2) << " | ";
+  }
+  catch(const std::exception& e) {
+    std::cout << "| " << name << " | exception: " << e.what() << " |\n";
+    return 2;
+  }
+  row << fixed(elapsed_ms(start) / 1000, 2) << " | ";
+  if(missed.empty()) row << "met |";
+  else {
+    row << "**missed:";
+    for(const std::string& m : missed) row << ' ' << m << ';';
+    row << "** |";
+  }
+  std::cout << row.str() << "\n";
+  return missed.empty() ? EXIT_SUCCESS : EXIT_FAILURE;
+}
