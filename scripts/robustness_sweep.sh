@@ -4,12 +4,12 @@
 # of doc/robustness.md (one row per mesh, then the totals). Run after a build
 # with the tests on (bash scripts/test.sh). The same runs are the CTest tests
 # labelled 'sweep' (ctest -L sweep).
-# usage: [LIMIT=120] bash scripts/robustness_sweep.sh > table.md
+# usage: [LIMIT=300] bash scripts/robustness_sweep.sh > table.md
 set -uo pipefail
 cd "$(dirname "$0")/.."
 meshes=build/cgal_data/data/meshes
 program=build/test/sweep_mesh
-limit=${LIMIT:-120}
+limit=${LIMIT:-300}
 [ -x "$program" ] || { echo "build first: $program is missing" >&2; exit 1; }
 "$program" --header
 met=0; missed=0; crashed=0; timed_out=0; refused=0; total=0

@@ -152,9 +152,17 @@ bool fans_overlap(const TriangleMesh& tm, const VertexUVMap& uv,
                           EK::Point_2(q[2][0] + t * (cx - q[2][0]), q[2][1] + t * (cy - q[2][1])));
   };
   const std::vector<face_descriptor> fa = fan(a), fb = fan(b);
-  for(face_descriptor f : fa)
-    for(face_descriptor g : fb)
-      if(f != g && CGAL::do_intersect(shrunk(f), shrunk(g))) return true;
+  for(face_descriptor f : fa) {
+    const EK::Triangle_2 tf = shrunk(f);
+    // a zero-area image is a fold: it is not a clean touch (and CGAL's
+    // triangle intersection test requires non-degenerate triangles)
+    if(tf.is_degenerate()) return true;
+    for(face_descriptor g : fb) {
+      if(f == g) continue;
+      const EK::Triangle_2 tg = shrunk(g);
+      if(tg.is_degenerate() || CGAL::do_intersect(tf, tg)) return true;
+    }
+  }
   return false;
 }
 

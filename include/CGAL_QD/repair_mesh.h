@@ -276,7 +276,7 @@ Mesh_inspection inspect_mesh(const FaceGraph& tm, const NamedParameters& np = CG
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph`
 /// \param points the points; taken by value because the repairs change them
-/// \param polygons each a sequence of indices into `points`
+/// \param polygons each a `std::vector`-like sequence of indices into `points`
 /// \param pm the output mesh; it is cleared first, and left empty on failure
 /// \param np optional named parameters: `CGAL::parameters::vertex_point_map`
 ///   of `pm`, `CGAL_QD::parameters::needle_threshold` (for the inspection).

@@ -284,6 +284,8 @@ namespace IO {
 ///
 /// ASCII OFF is read here, one vertex or face per line; binary OFF, OBJ, PLY
 /// and STL by CGAL's readers, PLY after a walk over its declared elements.
+/// Binary OFF is not checked first: a corrupt face size there reaches CGAL's
+/// reader as it is.
 /// NaN and infinite coordinates are read as such; indices are not checked
 /// against the number of points (`repair_polygon_soup_to_mesh()` does).
 ///
