@@ -12,7 +12,8 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <algorithm>
 #include <cmath>
@@ -129,22 +130,8 @@ template <class Mesh, class OutMesh>
 void copy_faces(const Mesh& tm, const std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& faces_in,
                 OutMesh& out)
 {
-  typedef typename boost::graph_traits<OutMesh>::vertex_descriptor out_vertex;
   CGAL::clear(out);
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
-  std::vector<out_vertex> image(num_vertices(tm), boost::graph_traits<OutMesh>::null_vertex());
-  for(const auto f : faces_in) {
-    std::vector<out_vertex> corners;
-    for(const auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-      out_vertex& w = image[get(vim, v)];
-      if(w == boost::graph_traits<OutMesh>::null_vertex()) {
-        w = add_vertex(out);
-        put(get(CGAL::vertex_point, out), w, get(CGAL::vertex_point, tm, v));
-      }
-      corners.push_back(w);
-    }
-    CGAL::Euler::add_face(corners, out);
-  }
+  CGAL::copy_face_graph(CGAL::Face_filtered_graph<Mesh>(tm, faces_in), out);
 }
 
 } // namespace qd_test

@@ -22,6 +22,7 @@
 #include <CGAL_QD/validate_patch.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -59,35 +60,16 @@ double elapsed_ms(std::chrono::steady_clock::time_point since)
 // the faces of the largest component (by area)
 std::vector<face_descriptor> largest_component(const Mesh& tm)
 {
-  std::vector<int> component(num_faces(tm), -1);
-  std::vector<double> area;
-  std::vector<std::vector<face_descriptor>> members;
-  for(const face_descriptor f : faces(tm)) {
-    if(component[f.idx()] >= 0) continue;
-    const int c = static_cast<int>(area.size());
-    area.push_back(0);
-    members.emplace_back();
-    std::vector<face_descriptor> stack(1, f);
-    component[f.idx()] = c;
-    while(!stack.empty()) {
-      const face_descriptor g = stack.back();
-      stack.pop_back();
-      members[c].push_back(g);
-      area[c] += CGAL::Polygon_mesh_processing::face_area(g, tm);
-      for(const auto h : CGAL::halfedges_around_face(halfedge(g, tm), tm)) {
-        const face_descriptor n = face(opposite(h, tm), tm);
-        if(n != Mesh::null_face() && component[n.idx()] < 0) {
-          component[n.idx()] = c;
-          stack.push_back(n);
-        }
-      }
-    }
-  }
-  std::size_t best = 0;
-  for(std::size_t c = 1; c < area.size(); ++c)
-    if(area[c] > area[best]) best = c;
-  std::sort(members[best].begin(), members[best].end());
-  return members[best];
+  std::vector<std::size_t> component(num_faces(tm), 0);
+  const std::size_t n = CGAL::Polygon_mesh_processing::connected_components(
+      tm, boost::make_iterator_property_map(component.begin(), get(CGAL::face_index, tm)));
+  std::vector<double> area(n, 0);
+  for(const face_descriptor f : faces(tm)) area[component[f.idx()]] += CGAL::Polygon_mesh_processing::face_area(f, tm);
+  const std::size_t best = static_cast<std::size_t>(std::max_element(area.begin(), area.end()) - area.begin());
+  std::vector<face_descriptor> members;
+  for(const face_descriptor f : faces(tm))
+    if(component[f.idx()] == best) members.push_back(f);
+  return members;
 }
 
 bool finite_uv(const std::vector<std::array<double, 2>>& uv)
@@ -145,15 +127,7 @@ int main(int argc, char** argv)
     const auto flatten_start = std::chrono::steady_clock::now();
     const CGAL_QD::Flattening_result flat = CGAL_QD::flatten_patch(patch, uv);
     const double flatten_s = elapsed_ms(flatten_start) / 1000;  // the measures are not included
-    std::size_t loops = 0;
-    {
-      std::vector<char> seen(num_halfedges(patch), 0);
-      for(const auto h : halfedges(patch))
-        if(is_border(h, patch) && !seen[h.idx()]) {
-          ++loops;
-          for(const auto g : CGAL::halfedges_around_face(h, patch)) seen[g.idx()] = 1;
-        }
-    }
+    const std::size_t loops = CGAL_QD::inspect_mesh(patch).border_loops;
     row << num_faces(patch) << " | " << loops << " | " << CGAL_QD::error_message(flat.status) << " | ";
     if(flat) {
       const auto d = CGAL_QD::compute_distortion(patch, uv);

@@ -151,17 +151,19 @@ bool fans_overlap(const TriangleMesh& tm, const VertexUVMap& uv,
                           EK::Point_2(q[1][0] + t * (cx - q[1][0]), q[1][1] + t * (cy - q[1][1])),
                           EK::Point_2(q[2][0] + t * (cx - q[2][0]), q[2][1] + t * (cy - q[2][1])));
   };
+  // a zero-area image is a fold: it is not a clean touch (and CGAL's
+  // triangle intersection test requires non-degenerate triangles)
   const std::vector<face_descriptor> fa = fan(a), fb = fan(b);
+  std::vector<EK::Triangle_2> tb;
+  for(face_descriptor g : fb) {
+    tb.push_back(shrunk(g));
+    if(tb.back().is_degenerate()) return true;
+  }
   for(face_descriptor f : fa) {
     const EK::Triangle_2 tf = shrunk(f);
-    // a zero-area image is a fold: it is not a clean touch (and CGAL's
-    // triangle intersection test requires non-degenerate triangles)
     if(tf.is_degenerate()) return true;
-    for(face_descriptor g : fb) {
-      if(f == g) continue;
-      const EK::Triangle_2 tg = shrunk(g);
-      if(tg.is_degenerate() || CGAL::do_intersect(tf, tg)) return true;
-    }
+    for(std::size_t k = 0; k < fb.size(); ++k)
+      if(f != fb[k] && CGAL::do_intersect(tf, tb[k])) return true;
   }
   return false;
 }

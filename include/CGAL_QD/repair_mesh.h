@@ -20,6 +20,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -228,25 +229,9 @@ Mesh_inspection inspect_mesh(const FaceGraph& tm, const NamedParameters& np = CG
     if(longest > needle * shortest) ++r.needle_faces;
   }
   // components through edges, and border loops
-  std::vector<char> seen(r.number_of_faces, 0);
-  std::vector<typename GT::face_descriptor> stack;
-  for(const auto f : faces(tm)) {
-    if(seen[get(fim, f)]) continue;
-    ++r.connected_components;
-    seen[get(fim, f)] = 1;
-    stack.assign(1, f);
-    while(!stack.empty()) {
-      const auto g = stack.back();
-      stack.pop_back();
-      for(const halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(g, tm), tm)) {
-        const auto n = face(opposite(h, tm), tm);
-        if(n != GT::null_face() && !seen[get(fim, n)]) {
-          seen[get(fim, n)] = 1;
-          stack.push_back(n);
-        }
-      }
-    }
-  }
+  std::vector<std::size_t> component(r.number_of_faces, 0);
+  r.connected_components = CGAL::Polygon_mesh_processing::connected_components(
+      tm, boost::make_iterator_property_map(component.begin(), fim), CGAL::parameters::face_index_map(fim));
   std::vector<char> on_loop(num_halfedges(tm), 0);
   for(const halfedge_descriptor h : halfedges(tm)) {
     if(!CGAL::is_border(h, tm) || on_loop[get(him, h)]) continue;
@@ -352,22 +337,19 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
       return fail(Error_code::NOT_TRIANGLE_MESH, "a polygon could not be triangulated");
     r.triangles_added = num_faces(pm) - before;
   }
-  {
-    const Mesh_inspection before = inspect_mesh(pm, np);
-    if(before.degenerate_faces > 0) {
-      PMP::remove_degenerate_faces(pm, np);
-      internal::collect_garbage_if_any(pm);
-      PMP::remove_isolated_vertices(pm);
-      internal::collect_garbage_if_any(pm);
-      const Mesh_inspection after = inspect_mesh(pm, np);
-      if(after.degenerate_faces > 0)
-        return fail(Error_code::DEGENERATE_FACE,
-                    std::to_string(after.degenerate_faces) + " degenerate (zero-area) faces could not be removed");
-      r.degenerate_faces_removed = before.number_of_faces - after.number_of_faces;
-      if(after.number_of_faces == 0) return fail(Error_code::EMPTY_MESH, "every face is degenerate");
-    }
-  }
   r.result = inspect_mesh(pm, np);
+  if(r.result.degenerate_faces > 0) {
+    const std::size_t before = r.result.number_of_faces;
+    PMP::remove_degenerate_faces(pm, np);
+    PMP::remove_isolated_vertices(pm);
+    internal::collect_garbage_if_any(pm);
+    r.result = inspect_mesh(pm, np);
+    if(r.result.degenerate_faces > 0)
+      return fail(Error_code::DEGENERATE_FACE,
+                  std::to_string(r.result.degenerate_faces) + " degenerate (zero-area) faces could not be removed");
+    r.degenerate_faces_removed = before - r.result.number_of_faces;
+    if(r.result.number_of_faces == 0) return fail(Error_code::EMPTY_MESH, "every face is degenerate");
+  }
   if(!r.result) return fail(r.result.status, error_message(r.result.status));
   return r;
 }
