@@ -17,8 +17,10 @@
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
-//                     [--max-stretch 2.0] [--denoise | --no-denoise] [--no-refine] [--no-merge]
-//                     [--merge-order largest|smallest|relative] [--sequential]
+//                     [--max-stretch 2.0] [--max-local-area-distortion 0.025]
+//                     [--criterion lpfb-ip-arap|lpfb-ip] [--arap-border free|keep-lengths]
+//                     [--denoise | --no-denoise] [--no-refine] [--no-merge]
+//                     [--merge-order largest|smallest|relative|compact] [--sequential]
 //                     [--json] [--verbose] [--quiet]
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
@@ -53,7 +55,9 @@ int usage()
 {
   std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter] [--tabs]\n"
                "                    [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
-               "                    [--denoise | --no-denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative]\n"
+               "                    [--max-local-area-distortion 0.025] [--criterion lpfb-ip-arap|lpfb-ip]\n"
+               "                    [--arap-border free|keep-lengths]\n"
+               "                    [--denoise | --no-denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative|compact]\n"
                "                    [--sequential] [--json] [--verbose] [--quiet]\n";
   return EXIT_FAILURE;
 }
@@ -90,6 +94,9 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
             << ", \"merge_trials\": " << r.merging.trials << ", \"merges\": " << r.merging.merges
             << ", \"max_area_distortion_pct\": " << number(r.max_area_distortion)
             << ", \"max_l2_stretch\": " << number(r.max_l2_stretch)
+            << ", \"max_local_area_distortion_pct\": " << number(r.max_local_area_distortion)
+            << ", \"max_seam_length_mismatch\": " << number(r.max_seam_length_mismatch)
+            << ", \"seam_zigzag\": " << number(r.seam_zigzag) << ", \"compactness\": " << number(r.compactness)
             << ", \"overlapping_charts\": " << r.overlapping_charts << ", \"rejected_charts\": " << r.rejected_charts
             << ", \"seam_length\": " << number(r.seam_length) << ", \"time_vsa_ms\": " << number(r.time_vsa_ms)
             << ", \"time_refine_ms\": " << number(r.time_refine_ms)
@@ -103,7 +110,12 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
               << "\", \"faces\": " << c.number_of_faces << ", \"area\": " << number(c.area)
               << ", \"border_loops\": " << c.number_of_border_loops
               << ", \"area_distortion_pct\": " << number(c.area_distortion)
-              << ", \"l2_stretch\": " << number(c.l2_stretch) << ", \"overlap\": " << (c.overlap ? "true" : "false")
+              << ", \"l2_stretch\": " << number(c.l2_stretch)
+              << ", \"local_area_distortion_pct\": " << number(c.local_area_distortion)
+              << ", \"max_border_length_error\": " << number(c.max_border_length_error)
+              << ", \"flattening\": \"" << (c.optimized ? "ARAP" : "LPFB+IP") << '"'
+              << ", \"seam_lengths_matched\": " << (c.lengths_matched ? "true" : "false")
+              << ", \"overlap\": " << (c.overlap ? "true" : "false")
               << "}";
   }
   out << "]}\n";
@@ -115,9 +127,11 @@ int main(int argc, char** argv)
 {
   if(argc < 2) return usage();
   const std::string path = argv[1];
-  double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0;
+  double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0, max_local = 0.025;
+  CGAL_QD::Chart_criterion criterion = CGAL_QD::Chart_criterion::LPFB_IP_THEN_ARAP;
   bool json = false, verbose = false, quiet = false, denoise = false, refine = true, merge = true, sequential = false;
-  CGAL_QD::Merge_order order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
+  CGAL_QD::Merge_order order = CGAL_QD::Merge_order::SMALLEST_AREA_FIRST;
+  CGAL_QD::Arap_border arap_border = CGAL_QD::Arap_border::FREE;
   std::string out_dir;
   CGAL_QD::IO::Pattern_options pattern;
   for(int i = 2; i < argc; ++i) {
@@ -147,11 +161,25 @@ int main(int argc, char** argv)
       if(o == "largest") order = CGAL_QD::Merge_order::LARGEST_AREA_FIRST;
       else if(o == "smallest") order = CGAL_QD::Merge_order::SMALLEST_AREA_FIRST;
       else if(o == "relative") order = CGAL_QD::Merge_order::LONGEST_RELATIVE_CURVE_FIRST;
+      else if(o == "compact") order = CGAL_QD::Merge_order::MOST_COMPACT_FIRST;
       else return usage();
     }
     else if(a == "--vsa-tolerance") { if(!read_number(i, argc, argv, vsa_tolerance)) return usage(); }
     else if(a == "--max-area-distortion") { if(!read_number(i, argc, argv, max_area)) return usage(); }
     else if(a == "--max-stretch") { if(!read_number(i, argc, argv, max_stretch)) return usage(); }
+    else if(a == "--max-local-area-distortion") { if(!read_number(i, argc, argv, max_local)) return usage(); }
+    else if(a == "--criterion" && i + 1 < argc) {
+      const std::string c = argv[++i];
+      if(c == "lpfb-ip-arap") criterion = CGAL_QD::Chart_criterion::LPFB_IP_THEN_ARAP;
+      else if(c == "lpfb-ip") criterion = CGAL_QD::Chart_criterion::LPFB_IP;
+      else return usage();
+    }
+    else if(a == "--arap-border" && i + 1 < argc) {
+      const std::string b = argv[++i];
+      if(b == "free") arap_border = CGAL_QD::Arap_border::FREE;
+      else if(b == "keep-lengths") arap_border = CGAL_QD::Arap_border::KEEP_LENGTHS;
+      else return usage();
+    }
     else return usage();
   }
 
@@ -181,7 +209,7 @@ int main(int argc, char** argv)
   auto chart = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
   namespace QP = CGAL_QD::parameters;
   // CGAL_QD's parameters take the rest of the pack as a second argument
-  const auto np = QP::vsa_tolerance(
+  const auto np = QP::arap_border(arap_border, QP::max_local_area_distortion(max_local, QP::chart_criterion(criterion, QP::vsa_tolerance(
       vsa_tolerance,
       QP::max_area_distortion(
           max_area, QP::max_l2_stretch(
@@ -191,7 +219,7 @@ int main(int argc, char** argv)
                                                                   merge, QP::merge_order(
                                                                              order, CGAL::parameters::verbose(verbose).callback(
                                                                                         std::function<void(const char*, double)>(
-                                                                                            progress)))))))));
+                                                                                            progress))))))))))));
   const CGAL_QD::Segmentation_result<Mesh> r =
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
@@ -243,8 +271,11 @@ int main(int argc, char** argv)
             << "  flattening     " << r.time_flatten_ms << " ms\n"
             << "  max A(Omega)   " << r.max_area_distortion << " %\n"
             << "  max L2         " << r.max_l2_stretch << "\n"
+            << "  max A_loc      " << r.max_local_area_distortion << " %\n"
             << "  overlapping    " << r.overlapping_charts << " charts\n"
-            << "  seam length    " << r.seam_length << "\n"
+            << "  seam length    " << r.seam_length << ", zigzag " << r.seam_zigzag << ", sides differ by at most "
+            << 100 * r.max_seam_length_mismatch << " %\n"
+            << "  compactness    " << r.compactness << "\n"
             << "  total          " << r.time_total_ms << " ms\n"
             << written;
   return EXIT_SUCCESS;

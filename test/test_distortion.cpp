@@ -79,6 +79,31 @@ BOOST_AUTO_TEST_CASE(uniform_scale_and_shear)
     BOOST_TEST(r.boundary_angle_error < 1e-12);
     BOOST_TEST(std::abs(QD::area_distortion(tm, uv.pmap_const()) - r.area_distortion) < 1e-15);
     BOOST_TEST(std::abs(QD::l2_stretch(tm, uv.pmap_const()) - r.l2_stretch) < 1e-15);
+    // a uniform scale changes every face alike: A_loc = A(Omega)
+    BOOST_TEST(std::abs(r.local_area_distortion - std::abs(s * s - 1) * 100) < 1e-9);
+    BOOST_TEST(std::abs(QD::local_area_distortion(tm, uv.pmap_const()) - r.local_area_distortion) < 1e-15);
+  }
+  // half of the grid grown by 2 in area, half shrunk by 2 (x scaled by 2 or by
+  // 1/2 on either side of x = 1): the total area error cancels partly, A_loc
+  // does not
+  {
+    const auto uv = map_uv(tm, [](const P3& p) {
+      return std::array<double, 2>{p[0] <= 1 ? 2 * p[0] : 2 + 0.5 * (p[0] - 1), p[1]};
+    });
+    const auto r = QD::compute_distortion(tm, uv.pmap_const());
+    double a3 = 0, a2 = 0, local = 0;  // by face, from the grid's cells left and right of x = 1
+    for(auto f : faces(tm)) {
+      const auto h = halfedge(f, tm);
+      const P3 p = p3(tm, source(h, tm)), q = p3(tm, target(h, tm)), o = p3(tm, target(next(h, tm), tm));
+      const double area = 0.5 * std::abs((q[0] - p[0]) * (o[1] - p[1]) - (o[0] - p[0]) * (q[1] - p[1]));
+      const double scale = (p[0] + q[0] + o[0]) / 3 <= 1 ? 2. : 0.5;
+      a3 += area;
+      a2 += scale * area;
+      local += std::abs(scale - 1) * area;
+    }
+    BOOST_TEST(std::abs(r.area_distortion - 100 * std::abs(a2 - a3) / a3) < 1e-9);
+    BOOST_TEST(std::abs(r.local_area_distortion - 100 * local / a3) < 1e-9);
+    BOOST_TEST(r.local_area_distortion > r.area_distortion);
   }
   // shear (x + k y, y): areas kept; the 2D -> 3D Jacobian [[1, -k], [0, 1]] gives
   // L2 = sqrt((2 + k^2) / 2) and Linf = its largest singular value

@@ -11,6 +11,7 @@
 #include <CGAL_QD/LPFB_border_parameterizer_3.h>
 #include <CGAL_QD/distortion.h>
 #include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/optimize_flattening.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
@@ -212,5 +213,122 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(bad_input_writes_nothing, Mesh, Mesh_types)
     Uv_store<Mesh> uv;
     BOOST_TEST((QD::flatten_patch(tm, uv.pmap()).status == QD::Error_code::INVALID_COORDINATES));
     BOOST_TEST(uv.map.empty());
+  }
+}
+
+// ===================================================================== optimize_flattening()
+
+namespace {
+
+// the largest |l_2D - target| / target over the border edges
+template <class Mesh, class Goal>
+double border_length_error(const Mesh& tm, const Uv_store<Mesh>& uv, const Goal& goal)
+{
+  double worst = 0;
+  for(auto h : halfedges(tm)) {
+    if(!is_border(h, tm)) continue;
+    const auto a = uv.at(source(h, tm)), b = uv.at(target(h, tm));
+    const double l = goal(h);
+    worst = (std::max)(worst, std::abs(std::hypot(a[0] - b[0], a[1] - b[1]) - l) / l);
+  }
+  return worst;
+}
+
+template <class Mesh>
+double length3(const Mesh& tm, typename boost::graph_traits<Mesh>::halfedge_descriptor h)
+{
+  const auto p = p3(tm, source(h, tm)), q = p3(tm, target(h, tm));
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(arap_keeps_an_isometry, Mesh, Mesh_types)
+{
+  // LPFB+IP of a developable patch is an isometry: ARAP has nothing to do
+  const Mesh tm = make<Mesh>(grid(24, 8, cylinder(1.0, 1.5 * pi, 2.0)));
+  auto f = flatten(tm);
+  for(QD::Arap_border mode : {QD::Arap_border::FREE, QD::Arap_border::KEEP_LENGTHS, QD::Arap_border::FIXED,
+                              QD::Arap_border::LENGTH_PRESERVED}) {
+    Uv_store<Mesh> uv = f.uv;
+    const QD::Optimization_result o = QD::optimize_flattening(tm, uv.pmap(), QD::parameters::arap_border(mode));
+    BOOST_REQUIRE_MESSAGE(o, QD::error_message(o.status));
+    BOOST_TEST(o.energy_before < 1e-12);
+    BOOST_TEST(o.energy_after < 1e-12);
+    BOOST_TEST(!o.input_flipped);
+    const auto d = QD::compute_distortion(tm, uv.pmap_const());
+    BOOST_TEST(d.area_distortion < 1e-6);
+    BOOST_TEST(d.local_area_distortion < 1e-5);
+    BOOST_TEST(d.flipped_faces == 0u);
+  }
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(arap_lowers_the_stretch_of_a_cap, Mesh, Mesh_types)
+{
+  // a spherical cap of 70 degrees: LPFB keeps its border at full length, so
+  // the interior stretches; the free border lets it shrink
+  const Mesh tm = make<Mesh>(polar(12, 48, sphere_cap(70 * pi / 180)));
+  const auto f = flatten(tm);
+  Uv_store<Mesh> free_uv = f.uv;
+  const QD::Optimization_result o =
+      QD::optimize_flattening(tm, free_uv.pmap(), QD::parameters::arap_border(QD::Arap_border::FREE));
+  BOOST_REQUIRE_MESSAGE(o, QD::error_message(o.status));
+  BOOST_TEST(o.iterations >= 1u);
+  BOOST_TEST(o.energy_after < o.energy_before);
+  const auto d = QD::compute_distortion(tm, free_uv.pmap_const());
+  BOOST_TEST_MESSAGE("cap: A_loc " << f.report.local_area_distortion << " % with LPFB+IP, "
+                                   << d.local_area_distortion << " % with free ARAP, " << o.iterations
+                                   << " iterations (" << o.shortened_steps << " shortened), energy "
+                                   << o.energy_before << " -> " << o.energy_after);
+  BOOST_TEST(d.local_area_distortion < 0.5 * f.report.local_area_distortion);
+  BOOST_TEST(d.flipped_faces == 0u);
+  BOOST_TEST(!d.overlap);
+
+  // LENGTH_PRESERVED: every border edge at its 3D length again
+  Uv_store<Mesh> kept = f.uv;
+  const QD::Optimization_result k = QD::optimize_flattening(tm, kept.pmap());
+  BOOST_REQUIRE_MESSAGE(k, QD::error_message(k.status));
+  BOOST_TEST(k.lengths_preserved);
+  BOOST_TEST(border_length_error(tm, kept, [&](auto h) { return length3(tm, h); }) < 1e-6);
+  BOOST_TEST(QD::compute_distortion(tm, kept.pmap_const()).flipped_faces == 0u);
+
+  // KEEP_LENGTHS with given lengths, 1 % shorter than in 3D, and a large weight
+  std::map<typename boost::graph_traits<Mesh>::edge_descriptor, double> shorter;
+  for(auto e : edges(tm)) shorter[e] = 0.99 * length3(tm, halfedge(e, tm));
+  Uv_store<Mesh> pulled = free_uv;
+  const QD::Optimization_result p = QD::optimize_flattening(
+      tm, pulled.pmap(),
+      QD::parameters::arap_border(
+          QD::Arap_border::KEEP_LENGTHS,
+          QD::parameters::border_edge_length_map(boost::make_assoc_property_map(shorter),
+                                                 QD::parameters::border_length_weight(1000.))));
+  BOOST_REQUIRE_MESSAGE(p, QD::error_message(p.status));
+  BOOST_TEST(border_length_error(tm, pulled, [&](auto h) { return shorter.at(edge(h, tm)); }) < 0.005);
+  BOOST_TEST(QD::compute_distortion(tm, pulled.pmap_const()).flipped_faces == 0u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(arap_rejects_bad_input, Mesh, Mesh_types)
+{
+  {
+    Mesh empty;
+    Uv_store<Mesh> uv;
+    BOOST_TEST((QD::optimize_flattening(empty, uv.pmap()).status == QD::Error_code::EMPTY_MESH));
+  }
+  {
+    Soup s;  // a closed octahedron
+    s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    s.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const Mesh tm = make<Mesh>(s);
+    Uv_store<Mesh> uv;
+    for(auto v : vertices(tm)) uv.map[v] = typename Uv_store<Mesh>::Point_2(0, 0);
+    BOOST_TEST((QD::optimize_flattening(tm, uv.pmap()).status == QD::Error_code::NO_BORDER));
+  }
+  {
+    const Mesh tm = make<Mesh>(grid(4, 4, bump(0.2)));
+    auto f = flatten(tm);
+    f.uv.map.begin()->second = typename Uv_store<Mesh>::Point_2(std::numeric_limits<double>::infinity(), 0);
+    const auto before = f.uv.map;
+    BOOST_TEST((QD::optimize_flattening(tm, f.uv.pmap()).status == QD::Error_code::INVALID_COORDINATES));
+    BOOST_TEST((f.uv.map == before));  // nothing written
   }
 }

@@ -41,7 +41,9 @@ struct Segmented
   QD::Segmentation_result<Surface_mesh> result;
 };
 
-// a torus (closed, genus 1) and, when CGAL's meshes are there, fandisk
+// a torus (closed, genus 1) and, when CGAL's meshes are there, fandisk; with
+// the paper's criterion, so that every border edge keeps its 3D length in the
+// patterns (the default's pieces are checked in test_segmentation)
 std::vector<Segmented> segmented_meshes()
 {
   std::vector<Segmented> out(1);
@@ -53,7 +55,8 @@ std::vector<Segmented> segmented_meshes()
   for(Segmented& s : out) {
     s.result = QD::segment_quasi_developable(
         s.tm, boost::make_assoc_property_map(s.chart),
-        QD::parameters::merge_order(QD::Merge_order::LONGEST_RELATIVE_CURVE_FIRST));
+        QD::parameters::chart_criterion(QD::Chart_criterion::LPFB_IP,
+                                        QD::parameters::merge_order(QD::Merge_order::LONGEST_RELATIVE_CURVE_FIRST)));
     BOOST_REQUIRE(s.result);
   }
   return out;

@@ -13,6 +13,7 @@
 #include <CGAL_QD/distortion.h>
 #include <CGAL_QD/extract_chart.h>
 #include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/vsa_segmentation.h>
@@ -47,7 +48,23 @@
 namespace CGAL_QD {
 
 /// \ingroup PkgCGAL_QDRef
-/// how one chart flattens by LPFB+IP, cut open along its seams and cuts.
+/// how the segmentation flattens a chart and decides whether it is within the thresholds.
+enum class Chart_criterion
+{
+  /// the paper's (Section 4.2): the LPFB+IP flattening, accepted when A(Omega) <= `max_area_distortion`,
+  /// L2 <= `max_l2_stretch` and there is no overlap
+  LPFB_IP,
+  /// LPFB+IP, then the free-boundary ARAP of `optimize_flattening()` started from it; a flattening is
+  /// accepted when A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch`, A_loc <=
+  /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
+  /// runs only when LPFB+IP is not accepted. The final flattening of every chart then gives the two sides
+  /// of every seam edge a common length (the mean of their lengths in the free maps) and fits each chart's
+  /// border to those lengths (`Arap_border::LENGTH_PRESERVED`), so that the pieces match along the seams.
+  LPFB_IP_THEN_ARAP
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// how one chart flattens, cut open along its seams and cuts.
 struct Chart_report
 {
   /// `OK`, or why the chart could not be flattened (`NOT_A_DISK` for a chart with a handle, ...)
@@ -57,7 +74,16 @@ struct Chart_report
   double area = 0;                         ///< 3D area
   double area_distortion = 0;              ///< A(Omega), in percent
   double l2_stretch = 0;                   ///< Sander's L2 stretch (not normalised: LPFB keeps the border lengths)
+  double local_area_distortion = 0;        ///< A_loc, in percent
+  /// the largest |l_2D - l_3D| / l_3D over the border edges of the flattening (with matched lengths, the
+  /// seams' common lengths differ from the 3D ones)
+  double max_border_length_error = 0;
   bool overlap = false;                    ///< S(Omega): a flipped face, a branch vertex or a border crossing
+  /// whether the flattening is the optimised one (`Chart_criterion::LPFB_IP_THEN_ARAP`), not LPFB+IP
+  bool optimized = false;
+  /// whether the border edges have the lengths common to the two sides of each seam (the final
+  /// flattening with `Chart_criterion::LPFB_IP_THEN_ARAP`); LPFB+IP gives them their 3D lengths
+  bool lengths_matched = false;
   /// whether the chart is within the thresholds: status `OK`, A(Omega) and L2 at most the thresholds, no overlap
   bool accepted = false;
 };
@@ -96,7 +122,10 @@ enum class Merge_order
   /// the curve whose two charts have the smallest total area first: small, cheap trials first
   SMALLEST_AREA_FIRST,
   /// the curve with the largest length / sqrt(area of its two charts) first: charts that share much border
-  LONGEST_RELATIVE_CURVE_FIRST
+  LONGEST_RELATIVE_CURVE_FIRST,
+  /// the curve whose removal gives the most compact chart first (largest 4 pi area / perimeter^2, the
+  /// perimeter in 3D with cuts inside the chart counted twice): round pieces rather than sprawling ones
+  MOST_COMPACT_FIRST
 };
 
 namespace internal {
@@ -105,6 +134,11 @@ struct Merge_thresholds
 {
   double max_area_distortion = 0.10;  // fraction
   double max_l2_stretch = 2.0;
+  double max_local_area_distortion = 0.025;  // fraction
+  Chart_criterion criterion = Chart_criterion::LPFB_IP_THEN_ARAP;
+  // the border of the optimised flattening of a trial: FREE or KEEP_LENGTHS
+  Arap_border arap_border = Arap_border::FREE;
+  double border_length_weight = 10.;
   // the two sides of a cut inside a developable chart develop onto each other:
   // they touch, which is not an overlap
   double overlap_tolerance = 1e-9;
@@ -128,10 +162,13 @@ public:
   {}
 
   // `faces` in increasing face index; `corner_uv`, if given, receives the UVs
-  // of the corners (3 per face, in the order of `faces`)
+  // of the corners (3 per face, in the order of `faces`). `border_target`, if
+  // given, holds per corner the target 2D length of the edge that ends at it
+  // (used for the border edges of the chart cut open).
   template <class IsCut>
   Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
-                        std::vector<std::array<double, 2>>* corner_uv = nullptr) const
+                        std::vector<std::array<double, 2>>* corner_uv = nullptr,
+                        const std::vector<double>* border_target = nullptr) const
   {
     Chart_report rep;
     rep.number_of_faces = faces.size();
@@ -167,17 +204,53 @@ public:
       rep.status = flat.status;
       return rep;
     }
-    const Distortion_report<Mesh> d =
-        compute_distortion(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
-    if(!d) {
-      rep.status = d.status;
-      return rep;
+    if(!measure(sm, uv, rep)) return rep;
+    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
+    if(!paper && border_target) {
+      // LPFB+IP, free-boundary ARAP, then the border fitted to the given
+      // lengths and the interior optimised with it; used whether or not
+      // LPFB+IP is accepted, so that the seams match
+      auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
+      auto goal = sm.template add_property_map<typename Mesh::Edge_index, double>("e:goal", 0.).first;
+      for(std::size_t i = 0; i < faces.size(); ++i)
+        for(auto h : CGAL::halfedges_around_face(halfedge(typename Mesh::Face_index(
+                                                     static_cast<typename Mesh::size_type>(i)), sm), sm)) {
+          int k = 0;
+          while(k < 2 && wedges.wedge_of_corner[3 * i + k] != std::size_t(target(h, sm))) ++k;
+          put(goal, edge(h, sm), (*border_target)[3 * i + k]);
+        }
+      for(auto v : vertices(sm)) put(opt, v, get(uv, v));
+      optimize_flattening(sm, opt, trial_parameters());
+      // the border edges pulled to the common lengths with a weight that makes
+      // them hold to a fraction of a percent
+      const Optimization_result o = optimize_flattening(
+          sm, opt,
+          parameters::arap_border(Arap_border::KEEP_LENGTHS,
+                                  parameters::border_edge_length_map(goal, parameters::border_length_weight(1000.))));
+      Chart_report matched = rep;
+      const bool ok = o && measure(sm, opt, matched);
+      if(ok) {
+        matched.optimized = true;
+        matched.lengths_matched = true;
+        rep = matched;
+        uv = opt;
+      } else {
+        rep.accepted = false;  // the caller keeps its earlier flattening
+      }
+    } else if(!paper && (!rep.accepted || corner_uv)) {
+      // free-boundary ARAP started from LPFB+IP; kept when it is accepted and
+      // LPFB+IP is not, or when both are and it has less local area distortion
+      auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
+      for(auto v : vertices(sm)) put(opt, v, get(uv, v));
+      const Optimization_result o = optimize_flattening(sm, opt, trial_parameters());
+      Chart_report better = rep;
+      if(o && measure(sm, opt, better) && better.accepted &&
+         (!rep.accepted || better.local_area_distortion < rep.local_area_distortion)) {
+        better.optimized = true;
+        rep = better;
+        uv = opt;
+      }
     }
-    rep.area_distortion = d.area_distortion;
-    rep.l2_stretch = d.l2_stretch;
-    rep.overlap = d.overlap;
-    rep.accepted = rep.area_distortion <= 100. * m_thresholds.max_area_distortion &&
-                   rep.l2_stretch <= m_thresholds.max_l2_stretch && !rep.overlap;
     if(corner_uv) {
       corner_uv->resize(3 * faces.size());
       for(std::size_t c = 0; c < 3 * faces.size(); ++c) {
@@ -190,6 +263,42 @@ public:
   }
 
 private:
+  auto trial_parameters() const
+  {
+    return parameters::arap_border(m_thresholds.arap_border,
+                                   parameters::border_length_weight(m_thresholds.border_length_weight));
+  }
+
+  // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
+  template <class UVMap>
+  bool measure(const Mesh& sm, const UVMap& uv, Chart_report& rep) const
+  {
+    const Distortion_report<Mesh> d =
+        compute_distortion(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
+    if(!d) {
+      rep.status = d.status;
+      rep.accepted = false;
+      return false;
+    }
+    rep.area_distortion = d.area_distortion;
+    rep.l2_stretch = d.l2_stretch;
+    rep.local_area_distortion = d.local_area_distortion;
+    rep.overlap = d.overlap;
+    rep.max_border_length_error = 0;
+    for(auto h : halfedges(sm))
+      if(is_border(h, sm)) {
+        const K::Point_3 &p = sm.point(source(h, sm)), &q = sm.point(target(h, sm));
+        const double l3 = std::sqrt(CGAL::squared_distance(p, q));
+        const double l2 = std::sqrt(CGAL::squared_distance(get(uv, source(h, sm)), get(uv, target(h, sm))));
+        rep.max_border_length_error = (std::max)(rep.max_border_length_error, std::abs(l2 - l3) / l3);
+      }
+    rep.accepted = rep.area_distortion <= 100. * m_thresholds.max_area_distortion &&
+                   rep.l2_stretch <= m_thresholds.max_l2_stretch && !rep.overlap &&
+                   (m_thresholds.criterion == Chart_criterion::LPFB_IP ||
+                    rep.local_area_distortion <= 100. * m_thresholds.max_local_area_distortion);
+    return true;
+  }
+
   const TriangleMesh& m_tm;
   FIM m_fim;
   VIM m_vim;
@@ -287,7 +396,7 @@ public:
   struct Curve
   {
     std::size_t a, b;  // initial charts on either side, a < b
-    std::vector<halfedge_descriptor> halfedges;  // one per edge
+    std::vector<halfedge_descriptor> halfedges;  // one per edge, in a face of chart a
     double length = 0;
     bool eliminated = false;
     bool active = true;  // in the heap, or to be tried again when a side changes
@@ -375,7 +484,7 @@ public:
         m_curves.push_back(c);
       }
       Curve& c = m_curves[curve_of_root[r]];
-      c.halfedges.push_back(border[i]);
+      c.halfedges.push_back(chart_of(border[i]) == c.a ? border[i] : opposite(border[i], m_tm));
       c.length += distance3(m_points[get(m_vim, source(border[i], m_tm))], m_points[get(m_vim, target(border[i], m_tm))]);
       m_curve_of[get(m_him, border[i])] = m_curve_of[get(m_him, opposite(border[i], m_tm))] = curve_of_root[r];
     }
@@ -408,6 +517,16 @@ public:
       m_faces_of_chart[m_chart[i]].push_back(m_face_of[i]);
       m_area[m_chart[i]] += geo[i].area;
     }
+    m_perimeter.assign(m_n, 0.);
+    for(const Curve& c : m_curves) {
+      m_perimeter[c.a] += c.length;
+      m_perimeter[c.b] += c.length;
+    }
+    for(std::size_t k = 0; k < m_n; ++k)
+      for(face_descriptor f : m_faces_of_chart[k])
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, m_tm), m_tm))
+          if(is_border(opposite(h, m_tm), m_tm))
+            m_perimeter[k] += distance3(m_points[get(m_vim, source(h, m_tm))], m_points[get(m_vim, target(h, m_tm))]);
     // heap of (key, -curve); the stamp of a curve invalidates its older entries
     typedef std::tuple<double, long, std::size_t> Entry;
     std::priority_queue<Entry> heap;
@@ -501,6 +620,15 @@ public:
     return c >= 0 && !m_curves[c].eliminated;
   }
 
+  // the halfedges of every remaining curve, each in a face of the curve's first side
+  std::vector<std::vector<halfedge_descriptor>> remaining_curves() const
+  {
+    std::vector<std::vector<halfedge_descriptor>> out;
+    for(const Curve& c : m_curves)
+      if(!c.eliminated) out.push_back(c.halfedges);
+    return out;
+  }
+
   template <class OutputIterator>
   double seams(OutputIterator out) const
   {
@@ -529,6 +657,10 @@ private:
     switch(m_order) {
     case Merge_order::SMALLEST_AREA_FIRST: return -area;
     case Merge_order::LONGEST_RELATIVE_CURVE_FIRST: return m_curves[c].length / std::sqrt(area);
+    case Merge_order::MOST_COMPACT_FIRST: {
+      const double p = (r1 == r2 ? m_perimeter[r1] : m_perimeter[r1] + m_perimeter[r2]) - 2 * m_curves[c].length;
+      return p > 0 ? 4 * 3.14159265358979323846 * area / (p * p) : 0.;
+    }
     default: return area;
     }
   }
@@ -558,7 +690,9 @@ private:
       m_members[r1].insert(m_members[r1].end(), m_members[r2].begin(), m_members[r2].end());
       m_members[r2].clear();
       m_area[r1] += m_area[r2];
+      m_perimeter[r1] += m_perimeter[r2];
     }
+    m_perimeter[r1] -= 2 * m_curves[c].length;
     ++m_version[r1];
   }
 
@@ -578,6 +712,7 @@ private:
   std::vector<std::vector<std::size_t>> m_members;
   std::vector<std::vector<face_descriptor>> m_faces_of_chart;
   std::vector<double> m_area;
+  std::vector<double> m_perimeter;  // 3D length of the border of each chart, its cuts counted twice
   std::size_t m_final_count = 0;
   Merge_order m_order = Merge_order::LARGEST_AREA_FIRST;
 };
@@ -591,6 +726,12 @@ Merge_thresholds merge_thresholds_from(const NamedParameters& np)
   t.max_area_distortion = choose_parameter(get_parameter(np, internal_np::max_area_distortion_t()), t.max_area_distortion);
   t.max_l2_stretch = choose_parameter(get_parameter(np, internal_np::max_l2_stretch_t()), t.max_l2_stretch);
   t.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), t.overlap_tolerance);
+  t.max_local_area_distortion = choose_parameter(get_parameter(np, internal_np::max_local_area_distortion_t()),
+                                                 t.max_local_area_distortion);
+  t.criterion = choose_parameter(get_parameter(np, internal_np::chart_criterion_t()), t.criterion);
+  t.arap_border = choose_parameter(get_parameter(np, internal_np::arap_border_t()), t.arap_border);
+  t.border_length_weight =
+      choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), t.border_length_weight);
   return t;
 }
 
@@ -679,7 +820,7 @@ Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, 
   result.time_split_ms = internal::milliseconds_since(t);
   merger.build_curves();
   result.boundary_curves = merger.number_of_curves();
-  merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::LARGEST_AREA_FIRST));
+  merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::SMALLEST_AREA_FIRST));
   std::tie(result.trials, result.merges) = merger.template merge<ConcurrencyTag>(geo, progress, verbose);
   result.number_of_charts = merger.number_of_final_charts();
   result.seam_length = merger.seams(std::back_inserter(result.seam_edges));

@@ -45,6 +45,9 @@ struct Distortion_report
   double area_2d = 0;  ///< sum of the unsigned 2D face areas
   /// A(Omega) = |sum |A_2D| - sum A_3D| / sum A_3D x 100 (paper Eq. 19), in percent
   double area_distortion = 0;
+  /// A_loc = sum |A_2D(T) - A_3D(T)| / sum A_3D(T) x 100, with unsigned 2D areas at true scale, in percent:
+  /// unlike `area_distortion`, faces that grow and faces that shrink do not cancel out
+  double local_area_distortion = 0;
   /// Sander et al. 2001 L2 stretch of the map 2D -> 3D, sqrt(sum L2(T)^2 A_3D(T) / sum A_3D(T));
   /// 1 only when the map is an isometry, smaller when the UVs are larger than the surface
   double l2_stretch = 0;
@@ -199,7 +202,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 
   const std::size_t nv = num_vertices(tm);
   std::vector<double> angle_sum_2d(nv, 0.), angle_sum_3d(nv, 0.);
-  double stretch2 = 0, angle_error = 0;
+  double stretch2 = 0, angle_error = 0, local_area_error = 0;
   std::size_t corners = 0;
   bool infinite_stretch = false;
   for(face_descriptor f : faces(tm)) {
@@ -213,6 +216,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
     const double a2s = 0.5 * ((s[1][0] - s[0][0]) * (s[2][1] - s[0][1]) - (s[2][0] - s[0][0]) * (s[1][1] - s[0][1]));
     rep.area_3d += a3;
     rep.area_2d += std::abs(a2s);
+    local_area_error += std::abs(std::abs(a2s) - a3);
     if(CGAL::orientation(EK::Point_2(s[0][0], s[0][1]), EK::Point_2(s[1][0], s[1][1]),
                          EK::Point_2(s[2][0], s[2][1])) != CGAL::LEFT_TURN)
       ++rep.flipped_faces;
@@ -249,6 +253,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
     }
   }
   rep.area_distortion = rep.area_3d > 0 ? std::abs(rep.area_2d - rep.area_3d) / rep.area_3d * 100. : 0.;
+  rep.local_area_distortion = rep.area_3d > 0 ? local_area_error / rep.area_3d * 100. : 0.;
   if(infinite_stretch) {
     rep.l2_stretch = rep.l2_stretch_normalized = rep.linf_stretch = std::numeric_limits<double>::infinity();
   } else {
@@ -319,11 +324,13 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
         const EK::Point_2& p = (shared == si) ? seg[i].target() : seg[i].source();
         const EK::Point_2& q = (shared == sj) ? seg[j].target() : seg[j].source();
         if(delta > 0) {
-          // folded back: q on the ray from c through p, within delta of it, and apart from p
+          // folded back: q on the ray from c through p, within delta of it, and apart from p; unless the
+          // faces at c fill less than a half-turn between the two edges: then it is the sharp tip of a
+          // needle, whose faces lie between the edges without overlapping
           const std::array<double, 2> cc = {c.x(), c.y()}, pp = {p.x(), p.y()}, qq = {q.x(), q.y()};
           const double along = (pp[0] - cc[0]) * (qq[0] - cc[0]) + (pp[1] - cc[1]) * (qq[1] - cc[1]);
           crossing = along > 0 && std::abs(signed_distance(cc, pp, qq)) <= delta &&
-                     std::hypot(pp[0] - qq[0], pp[1] - qq[1]) > delta;
+                     std::hypot(pp[0] - qq[0], pp[1] - qq[1]) > delta && angle_sum_2d[get(vim, shared)] > pi;
         } else {
           crossing = CGAL::collinear(c, p, q) && !CGAL::collinear_are_ordered_along_line(p, c, q);
         }
@@ -454,6 +461,17 @@ double area_distortion(const TriangleMesh& tm, const VertexUVMap& uv,
 {
   const auto r = internal::face_measures(tm, uv, np);
   return r ? r.area_distortion : std::numeric_limits<double>::infinity();
+}
+
+/// \ingroup PkgCGAL_QDRef
+/// returns the local area distortion A_loc in percent (see
+/// `Distortion_report::local_area_distortion`); +infinity on invalid input.
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double local_area_distortion(const TriangleMesh& tm, const VertexUVMap& uv,
+                             const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto r = internal::face_measures(tm, uv, np);
+  return r ? r.local_area_distortion : std::numeric_limits<double>::infinity();
 }
 
 /// \ingroup PkgCGAL_QDRef

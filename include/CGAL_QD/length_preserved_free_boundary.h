@@ -66,14 +66,16 @@ struct No_vertex_visitor
   template <class V> void operator()(const V&) const {}
 };
 
-// `on_write(v)` is called for every border vertex written to `uv`.
-template <class TriangleMesh, class VertexUVMap, class VPM, class VIM, class FIM,
-          class OnWrite = No_vertex_visitor>
+// `on_write(v)` is called for every border vertex written to `uv`. The
+// target angles are the corner angles measured with `angle_vpm`, the border
+// edge lengths `border_length(e)`.
+template <class TriangleMesh, class VertexUVMap, class VPM, class VIM, class FIM, class OnWrite, class AngleVPM,
+          class BorderLength>
 Free_boundary_result length_preserved_free_boundary_impl(
     const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::face_descriptor start_face,
     bool require_single_component, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor border,
     VertexUVMap uv, const VPM& vpm, const VIM& vim, const FIM& fim, const Lpfb_options& options,
-    OnWrite on_write = OnWrite())
+    OnWrite on_write, const AngleVPM& angle_vpm, const BorderLength& border_length)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -105,7 +107,7 @@ Free_boundary_result length_preserved_free_boundary_impl(
   }
 
   Virtual_cut_border<TriangleMesh> cut;
-  if(!build_virtual_cut_border(tm, patch, outer, vpm, vim, cut)) {
+  if(!build_virtual_cut_border(tm, patch, outer, vpm, vim, cut, angle_vpm, border_length)) {
     result.status = Error_code::NOT_A_DISK;
     return result;
   }
@@ -143,8 +145,7 @@ Free_boundary_result length_preserved_free_boundary_impl(
       const Acc& s = acc[get(vim, source(h, tm))];
       const Acc& t = acc[get(vim, target(h, tm))];
       const double l2 = std::hypot(t.x / t.count - s.x / s.count, t.y / t.count - s.y / s.count);
-      length_error += std::abs(l2 - distance3(point_of<TriangleMesh>(source(h, tm), vpm),
-                                              point_of<TriangleMesh>(target(h, tm), vpm)));
+      length_error += std::abs(l2 - double(border_length(edge(h, tm))));
       angle_error += std::abs(s.a - s.theta);
       ++count;
     }
@@ -161,6 +162,21 @@ Free_boundary_result length_preserved_free_boundary_impl(
       on_write(v);
     }
   return result;
+}
+
+template <class TriangleMesh, class VertexUVMap, class VPM, class VIM, class FIM,
+          class OnWrite = No_vertex_visitor>
+Free_boundary_result length_preserved_free_boundary_impl(
+    const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::face_descriptor start_face,
+    bool require_single_component, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor border,
+    VertexUVMap uv, const VPM& vpm, const VIM& vim, const FIM& fim, const Lpfb_options& options,
+    OnWrite on_write = OnWrite())
+{
+  return length_preserved_free_boundary_impl(
+      tm, start_face, require_single_component, border, uv, vpm, vim, fim, options, on_write, vpm,
+      [&](typename boost::graph_traits<TriangleMesh>::edge_descriptor e) {
+        return distance3(point_of<TriangleMesh>(source(e, tm), vpm), point_of<TriangleMesh>(target(e, tm), vpm));
+      });
 }
 
 template <class NamedParameters>

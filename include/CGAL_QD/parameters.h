@@ -33,6 +33,11 @@ struct atlas_margin_t {};
 struct max_area_distortion_t {};
 struct max_l2_stretch_t {};
 struct needle_threshold_t {};
+struct max_local_area_distortion_t {};
+struct chart_criterion_t {};
+struct arap_border_t {};
+struct border_edge_length_map_t {};
+struct border_length_weight_t {};
 
 } // namespace internal_np
 
@@ -92,6 +97,26 @@ CGAL_QD_ADD_NAMED_PARAMETER(merge_charts)
 CGAL_QD_ADD_NAMED_PARAMETER(max_area_distortion)
 /// the largest L2 stretch of an accepted chart. Default: 2.0, the paper's threshold.
 CGAL_QD_ADD_NAMED_PARAMETER(max_l2_stretch)
+/// the largest local area distortion A_loc of an accepted chart, as a
+/// fraction (0.025 is 2.5 %; see `Distortion_report::local_area_distortion`).
+/// Default: 0.025. Not used by the paper's criterion (`Chart_criterion::LPFB_IP`).
+CGAL_QD_ADD_NAMED_PARAMETER(max_local_area_distortion)
+/// how the segmentation flattens and judges a chart, a `CGAL_QD::Chart_criterion`.
+/// Default: `Chart_criterion::LPFB_IP_THEN_ARAP`.
+CGAL_QD_ADD_NAMED_PARAMETER(chart_criterion)
+/// how `optimize_flattening()` treats the border, a `CGAL_QD::Arap_border`.
+/// Default: `Arap_border::LENGTH_PRESERVED`. In `segment_quasi_developable()`
+/// and `merge_charts_by_boundaries()`, the border of the optimised flattening
+/// of a merging trial: `FREE` (the default) or `KEEP_LENGTHS`.
+CGAL_QD_ADD_NAMED_PARAMETER(arap_border)
+/// the target length of every border edge in `optimize_flattening()` with
+/// `Arap_border::KEEP_LENGTHS` or `LENGTH_PRESERVED`: a readable property map
+/// from edges to positive `double`s. Default: the 3D lengths.
+CGAL_QD_ADD_NAMED_PARAMETER(border_edge_length_map)
+/// the weight of the border edge lengths in `optimize_flattening()` with
+/// `Arap_border::KEEP_LENGTHS`, relative to the cotangent weights. Default: 10.
+/// Larger weights give seams whose two sides differ less in length, and more pieces.
+CGAL_QD_ADD_NAMED_PARAMETER(border_length_weight)
 /// the ratio of the longest to the shortest edge above which `inspect_mesh()`
 /// counts a triangle as a needle. Default: 1000.
 CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)
@@ -101,7 +126,7 @@ CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)
 /// Default: 0 in `compute_distortion()`, 1e-9 in the segmentation.
 CGAL_QD_ADD_NAMED_PARAMETER(overlap_tolerance)
 /// the order of the merging trials, a `CGAL_QD::Merge_order`. Default:
-/// `Merge_order::LARGEST_AREA_FIRST`, the paper's.
+/// `Merge_order::SMALLEST_AREA_FIRST`; `LARGEST_AREA_FIRST` is the paper's.
 CGAL_QD_ADD_NAMED_PARAMETER(merge_order)
 /// the free space around each chart in `pack_charts()`, about a fraction of
 /// the atlas side. Default: 0.005.

@@ -32,6 +32,7 @@
 #include <tuple>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL_QD {
@@ -45,13 +46,23 @@ struct Vsa_result
   /// the largest normalised L2,1 error over the charts (see `chart_error`)
   double max_chart_error = 0;
   /// per chart: sum over its faces of area(f) |n_f - n_c|^2, divided by the
-  /// chart's area; n_c is the chart's area-weighted mean normal. In [0, 4].
+  /// chart's area; n_f is the face's normal smoothed over `smoothing_radius`
+  /// and n_c the chart's area-weighted mean of them. In [0, 4].
   std::vector<double> chart_error;
   std::vector<double> chart_area;
   /// proxies added beyond the first of each connected component
   std::size_t proxies_added = 0;
-  /// whether the tolerance was reached before `max_number_of_proxies`
+  /// whether every chart of at least `min_chart_area` was within the tolerance
+  /// before `max_number_of_proxies` was reached
   bool tolerance_reached = false;
+  /// the radius over which face normals were averaged: 0.03 times the
+  /// diagonal of the bounding box of the face centroids
+  double smoothing_radius = 0;
+  /// charts smaller than this area are not split further: the square of 0.07
+  /// times that diagonal
+  double min_chart_area = 0;
+  /// the cap that applied: the named parameter, else ceil(total area / `min_chart_area`)
+  std::size_t max_number_of_proxies = 0;
   double time_ms = 0;
 
   explicit operator bool() const { return status == Error_code::OK; }
@@ -59,6 +70,17 @@ struct Vsa_result
 
 
 namespace internal {
+
+// Step 1's scale, relative to the diagonal of the bounding box of the face
+// centroids: normals are averaged over geodesic discs of radius 0.03 of it,
+// and charts narrower than 0.07 of it (by area) are not split further. On
+// elephant from 1.4K to 89K faces and on bunny00 from 19K to 75K faces they
+// keep the number of charts within 15 %.
+inline constexpr double vsa_smoothing_radius = 0.03;
+inline constexpr double vsa_min_chart_size = 0.07;
+// normals are not averaged across edges whose dihedral angle turns the
+// normal by more than 60 degrees (creases such as a cube's edges)
+inline constexpr double vsa_crease_cos = 0.5;
 
 // Checks for a mesh to segment: it may be closed, have borders, several
 // components or handles, but its faces must be proper triangles.
@@ -75,13 +97,12 @@ Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
 }
 
 // Normalised L2,1 error of every chart, from per-face unit normals and areas.
-template <class TriangleMesh, class VPM, class FIM, class ChartOf>
-void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::size_t n_charts,
+template <class TriangleMesh, class FIM, class ChartOf>
+void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo, const FIM& fim, std::size_t n_charts,
                   const ChartOf& chart_of, std::vector<double>& error, std::vector<double>& area)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<std::array<double, 3>> normal_sum(n_charts, {0., 0., 0.});
-  const std::vector<Face_geometry> geo = face_geometry(tm, vpm, fim);
   area.assign(n_charts, 0.);
   for(typename GT::face_descriptor f : faces(tm)) {
     const std::size_t k = chart_of(f);
@@ -104,6 +125,97 @@ void chart_errors(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, std::s
   }
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
 }
+
+// The normal of every face averaged, weighted by area, over the faces whose
+// centroids lie within `radius` of its centroid and are reached from it
+// through such faces across shared edges (a geodesic disc for a radius small
+// against the curvature). An edge whose dihedral angle turns the normal by
+// more than acos(`sharp_cos`) is not crossed, so creases stay sharp. A face
+// whose neighbours are all farther than `radius` keeps its normal: the
+// smoothing only removes variation at scales below `radius`.
+template <class TriangleMesh, class FIM>
+std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM& fim,
+                                               const std::vector<Face_geometry>& geo, double radius,
+                                               double sharp_cos)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  const std::size_t nf = geo.size(), none = std::size_t(-1);
+  std::vector<Face_geometry> out = geo;
+  if(!(radius > 0)) return out;
+  const double r2 = radius * radius;
+  auto squared_distance = [&](std::size_t i, std::size_t g) {
+    const double x = geo[i].centroid[0] - geo[g].centroid[0], y = geo[i].centroid[1] - geo[g].centroid[1],
+                 z = geo[i].centroid[2] - geo[g].centroid[2];
+    return x * x + y * y + z * z;
+  };
+  std::vector<std::array<std::size_t, 3>> next_to(nf);
+  for(typename GT::face_descriptor f : faces(tm)) {
+    const std::size_t i = get(fim, f);
+    int j = 0;
+    for(typename GT::halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const typename GT::halfedge_descriptor o = opposite(h, tm);
+      std::size_t g = is_border(o, tm) ? none : std::size_t(get(fim, face(o, tm)));
+      if(g != none) {
+        const double dot = geo[i].normal[0] * geo[g].normal[0] + geo[i].normal[1] * geo[g].normal[1] +
+                           geo[i].normal[2] * geo[g].normal[2];
+        if(dot < sharp_cos) g = none;
+      }
+      next_to[i][j++] = g;
+    }
+  }
+  std::vector<std::size_t> stamp(nf, none), queue;
+  for(std::size_t s = 0; s < nf; ++s) {
+    bool near = false;  // most faces of a coarse mesh have no neighbour within the radius
+    for(int j = 0; j < 3; ++j) near = near || (next_to[s][j] != none && squared_distance(s, next_to[s][j]) <= r2);
+    if(!near) continue;
+    std::array<double, 3> sum = {0., 0., 0.};
+    stamp[s] = s;
+    queue.assign(1, s);
+    for(std::size_t q = 0; q < queue.size(); ++q) {
+      const std::size_t i = queue[q];
+      for(int k = 0; k < 3; ++k) sum[k] += geo[i].area * geo[i].normal[k];
+      for(int j = 0; j < 3; ++j) {
+        const std::size_t g = next_to[i][j];
+        if(g == none || stamp[g] == s || squared_distance(s, g) > r2) continue;
+        stamp[g] = s;
+        queue.push_back(g);
+      }
+    }
+    const double l = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    if(l > 0) for(int k = 0; k < 3; ++k) out[s].normal[k] = sum[k] / l;
+  }
+  return out;
+}
+
+// The L2,1 metric of CGAL's `L21_metric_plane_proxy` on given per-face normals
+// and areas: a model of `ErrorMetricProxy` for `Variational_shape_approximation`.
+template <class TriangleMesh, class FIM, class Vector_3>
+struct Given_normals_L21_metric
+{
+  typedef Vector_3 Proxy;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  const std::vector<Face_geometry>* geo;
+  FIM fim;
+
+  double compute_error(const face_descriptor f, const TriangleMesh&, const Proxy& px) const
+  {
+    const Face_geometry& d = (*geo)[get(fim, f)];
+    const double x = d.normal[0] - px.x(), y = d.normal[1] - px.y(), z = d.normal[2] - px.z();
+    return d.area * (x * x + y * y + z * z);
+  }
+
+  template <class FaceRange>
+  Proxy fit_proxy(const FaceRange& range, const TriangleMesh&) const
+  {
+    double s[3] = {0., 0., 0.};
+    for(const face_descriptor f : range) {
+      const Face_geometry& d = (*geo)[get(fim, f)];
+      for(int i = 0; i < 3; ++i) s[i] += d.area * d.normal[i];
+    }
+    const double l = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    return l > 0 ? Proxy(s[0] / l, s[1] / l, s[2] / l) : Proxy(0., 0., 0.);
+  }
+};
 
 // a property map that stores face values in a vector by face index
 template <class Face, class FIM>
@@ -155,13 +267,13 @@ std::size_t make_charts_connected(const TriangleMesh& tm, const FIM& fim, std::v
 // L2,1 error is 2 - 2|S|/A, so a merge is evaluated in O(1). Incremental
 // seeding can put two proxies on one planar region, and VSA never removes one.
 // Returns the number of charts; `chart` is renumbered into [0, n).
-template <class TriangleMesh, class VPM, class FIM>
-std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, double tolerance,
-                                          std::size_t n, std::vector<std::size_t>& chart)
+template <class TriangleMesh, class FIM>
+std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vector<Face_geometry>& geo,
+                                          const FIM& fim, double tolerance, std::size_t n,
+                                          std::vector<std::size_t>& chart)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<std::array<double, 4>> sum(n, {0., 0., 0., 0.});  // S, A
-  const std::vector<Face_geometry> geo = face_geometry(tm, vpm, fim);
   for(typename GT::face_descriptor f : faces(tm)) {
     const Face_geometry& d = geo[get(fim, f)];
     auto& s = sum[chart[get(fim, f)]];
@@ -215,12 +327,24 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm
 /// segments `tm` into nearly planar, connected charts by error-controlled
 /// Variational Shape Approximation (paper Section 2, step 1): starting from one
 /// proxy per connected component, proxies are added where the L2,1 error is
-/// worst, each addition followed by relaxation, until every chart's normalised
-/// \param tm the triangle mesh
-/// \param face_chart the chart id of every face
-/// L2,1 error is at most the tolerance. Adjacent charts whose union is still
-/// within the tolerance are then merged, cheapest first (incremental seeding
-/// can split one planar region). Writes a chart id in `[0, n)` per face.
+/// worst, each round of additions followed by relaxation, until every chart's
+/// normalised L2,1 error is at most the tolerance. Adjacent charts whose union
+/// is still within the tolerance are then merged, cheapest first (incremental
+/// seeding can split one planar region). Writes a chart id in `[0, n)` per face.
+///
+/// The error is measured at the scale of the shape, not of its faces, so that
+/// the same shape at different resolutions gives about the same charts. With
+/// D the diagonal of the bounding box of the face centroids:
+///   - the normal of each face is the area-weighted mean of the normals of the
+///     faces whose centroids are within 0.03 D of its centroid and reached
+///     from it across edges without leaving that ball; edges whose dihedral
+///     angle turns the normal by more than 60 degrees are not crossed. Faces
+///     with no neighbour that close keep their own normal. The L2,1 metric of
+///     the relaxation, the chart errors, the stopping test and the merge use
+///     these normals;
+///   - a chart whose area is below (0.07 D)^2 is not split further, whatever
+///     its error: the tolerance is reached when every larger chart is within it;
+///   - the default proxy cap is ceil(total area / (0.07 D)^2).
 ///
 /// The mesh may be closed, have borders, several components or handles.
 ///
@@ -228,12 +352,14 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const VPM& vpm
 /// \tparam FaceChartMap a model of `WritablePropertyMap` with
 ///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and an
 ///         integral type as value
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// \param np optional named parameters:
-///   - `CGAL_QD::parameters::vsa_tolerance`: the largest normalised L2,1 error of a chart (default 0.25,
-///     which gives 29 charts on `bunny00` and 13 on `fandisk`)
-///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: max(50, faces / 200));
+///   - `CGAL_QD::parameters::vsa_tolerance`: the largest normalised L2,1 error of a chart of at least
+///     (0.07 D)^2 in area (default 0.25, which gives 25 charts on `bunny00` and 12 on `fandisk`)
+///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: ceil(total area / (0.07 D)^2));
 ///     `Vsa_result::tolerance_reached` tells whether the tolerance or this cap stopped the addition
-///   - `number_of_relaxations`: relaxation iterations after each addition (default 3)
+///   - `number_of_relaxations`: relaxation iterations after each round of additions (default 3)
 ///   - `vertex_point_map`, `face_index_map`
 /// \returns a `Vsa_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`
 ///          or `DEGENERATE_FACE` on invalid input, in which case nothing is written.
@@ -254,21 +380,39 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::vsa_tolerance_t()), 0.25);
   const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
-  // the normalised error does not drop below the spread of neighbouring face
-  // normals: on a coarse or detailed mesh the tolerance may be out of reach,
-  // and the cap keeps the charts at 200 faces on average before the merge-back
-  // (at least 50 proxies: small meshes are cheap, and CAD parts have many planes)
-  // (every VSA round re-partitions the whole mesh, so the cap bounds the time)
-  const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),
-                                                   (std::max<std::size_t>)(50, nf / 200));
   const std::size_t relaxations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxations), 3);
 
   result.status = internal::validate_mesh_to_segment(tm, vpm);
   if(result.status != Error_code::OK) return result;
 
+  typedef typename std::remove_const<decltype(fim)>::type FIM;
+  const std::vector<internal::Face_geometry> raw = internal::face_geometry(tm, vpm, fim);
+  // the scale of the shape: the diagonal of the bounding box of the face centroids
+  double total_area = 0, lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for(std::size_t i = 0; i < raw.size(); ++i) {
+    total_area += raw[i].area;
+    for(int k = 0; k < 3; ++k) {
+      lo[k] = i == 0 ? raw[i].centroid[k] : (std::min)(lo[k], raw[i].centroid[k]);
+      hi[k] = i == 0 ? raw[i].centroid[k] : (std::max)(hi[k], raw[i].centroid[k]);
+    }
+  }
+  const double diagonal =
+      std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  result.smoothing_radius = internal::vsa_smoothing_radius * diagonal;
+  result.min_chart_area = internal::vsa_min_chart_size * diagonal * internal::vsa_min_chart_size * diagonal;
+  const std::vector<internal::Face_geometry> geo =
+      internal::smooth_face_normals(tm, fim, raw, result.smoothing_radius, internal::vsa_crease_cos);
+  const std::size_t geometric_cap =
+      result.min_chart_area > 0 ? static_cast<std::size_t>(std::ceil(total_area / result.min_chart_area)) : 1;
+  const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),
+                                                   (std::max<std::size_t>)(1, geometric_cap));
+  result.max_number_of_proxies = max_proxies;
+
   typedef typename std::remove_const<decltype(vpm)>::type VPM;
-  typedef CGAL::Variational_shape_approximation<TriangleMesh, VPM> VSA;
-  typename VSA::Error_metric metric(tm, vpm);
+  typedef typename CGAL::Kernel_traits<typename boost::property_traits<VPM>::value_type>::Kernel::Vector_3 Vector_3;
+  typedef internal::Given_normals_L21_metric<TriangleMesh, FIM, Vector_3> Metric;
+  typedef CGAL::Variational_shape_approximation<TriangleMesh, VPM, Metric> VSA;
+  const Metric metric{&geo, fim};
   VSA vsa(tm, vpm, metric);
   vsa.initialize_seeds(CGAL::parameters::seeding_method(CGAL::Surface_mesh_approximation::INCREMENTAL)
                            .max_number_of_proxies(1)
@@ -278,18 +422,21 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
 
   std::vector<std::size_t> chart(nf);
   auto proxy_of = [&](face_descriptor f) { return chart[get(fim, f)]; };
-  const internal::Indexed_face_writer<face_descriptor, typename std::remove_const<decltype(fim)>::type> writer{
-      &chart, fim};
+  const internal::Indexed_face_writer<face_descriptor, FIM> writer{&chart, fim};
+  auto violates = [&](std::size_t k) {
+    return result.chart_error[k] > tolerance && result.chart_area[k] >= result.min_chart_area;
+  };
   for(;;) {
     vsa.proxy_map(writer);
-    internal::chart_errors(tm, vpm, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
-    const std::size_t violating = static_cast<std::size_t>(
-        std::count_if(result.chart_error.begin(), result.chart_error.end(), [&](double e) { return e > tolerance; }));
+    internal::chart_errors(tm, geo, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
+    std::size_t violating = 0;
+    for(std::size_t k = 0; k < result.chart_error.size(); ++k) violating += violates(k) ? 1 : 0;
     if(violating == 0) { result.tolerance_reached = true; break; }
     if(vsa.number_of_proxies() >= max_proxies) break;
-    // far from the tolerance, add several proxies per round, spread over the
-    // charts in proportion to their error, then relax once
-    const std::size_t add = (std::min)(max_proxies - vsa.number_of_proxies(), (std::max<std::size_t>)(1, violating / 2));
+    // one proxy per chart beyond the tolerance, spread over the charts in
+    // proportion to their error, then relax once (every round re-partitions
+    // the whole mesh, so the number of rounds sets the time)
+    const std::size_t add = (std::min)(max_proxies - vsa.number_of_proxies(), violating);
     const std::size_t added = add == 1 ? std::size_t(vsa.add_to_furthest_proxies(1, 0))
                                        : vsa.add_proxies_error_diffusion(add);
     if(added == 0) break;
@@ -297,8 +444,8 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   }
 
   std::size_t n = internal::make_charts_connected(tm, fim, chart);
-  n = internal::merge_charts_within_tolerance(tm, vpm, fim, tolerance, n, chart);
-  internal::chart_errors(tm, vpm, fim, n, proxy_of, result.chart_error, result.chart_area);
+  n = internal::merge_charts_within_tolerance(tm, geo, fim, tolerance, n, chart);
+  internal::chart_errors(tm, geo, fim, n, proxy_of, result.chart_error, result.chart_area);
   result.number_of_charts = n;
   result.max_chart_error = *std::max_element(result.chart_error.begin(), result.chart_error.end());
   result.proxies_added = vsa.number_of_proxies() - first_proxies;

@@ -70,9 +70,14 @@ double corner_angle(typename boost::graph_traits<TriangleMesh>::halfedge_descrip
 // Builds the cut border of a validated patch. `outer` is the index in
 // patch.loops of the outer loop. Returns false if the traced border is not a
 // single loop (which validation should already have excluded).
-template <class TriangleMesh, class VPM, class VIM>
+// The target angles are the corner angles measured with `angle_vpm`, the
+// lengths of the cut edges those of `vpm` and the length of every border edge
+// `border_length(e)` (`angle_vpm` and `border_length` differ from `vpm` when the
+// border is fitted to another embedding, or seams are given common lengths).
+template <class TriangleMesh, class VPM, class VIM, class AngleVPM, class BorderLength>
 bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>& patch, std::size_t outer,
-                              const VPM& vpm, const VIM& vim, Virtual_cut_border<TriangleMesh>& out)
+                              const VPM& vpm, const VIM& vim, Virtual_cut_border<TriangleMesh>& out,
+                              const AngleVPM& angle_vpm, const BorderLength& border_length)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -175,12 +180,12 @@ bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>&
   halfedge_descriptor h = h0;
   do {
     out.corner_halfedge.push_back(h);
-    double angle = corner_angle(h, tm, vpm);
+    double angle = corner_angle(h, tm, angle_vpm);
     halfedge_descriptor g = next(h, tm);
     std::size_t guard = 0;
     while(!is_cut(g)) {
       const halfedge_descriptor o = opposite(g, tm);
-      angle += corner_angle(o, tm, vpm);
+      angle += corner_angle(o, tm, angle_vpm);
       g = next(o, tm);
       if(++guard > n + patch.faces.size()) return false;
     }
@@ -208,7 +213,10 @@ bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>&
     const vertex_descriptor v = source(hi, tm);
     out.corner_vertex[i] = v;
     pb.target_angle[i] = wedge[(i + n - 1) % n];
-    pb.edge_length[i] = distance3(point_of<TriangleMesh>(v, vpm), point_of<TriangleMesh>(target(hi, tm), vpm));
+    pb.edge_length[i] = is_border_edge(hi, tm) ? double(border_length(edge(hi, tm)))
+                                               : distance3(point_of<TriangleMesh>(v, vpm),
+                                                           point_of<TriangleMesh>(target(hi, tm), vpm));
+    if(!(pb.edge_length[i] > 0) || !std::isfinite(pb.edge_length[i])) return false;
     pb.edge_loop[i] = is_border_edge(hi, tm) ? loop_of[get(vim, v)] : -1;
     const int l = loop_of[get(vim, v)];
     if(l >= 0) {
@@ -223,6 +231,17 @@ bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>&
     }
   }
   return true;
+}
+
+template <class TriangleMesh, class VPM, class VIM>
+bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>& patch, std::size_t outer,
+                              const VPM& vpm, const VIM& vim, Virtual_cut_border<TriangleMesh>& out)
+{
+  return build_virtual_cut_border(tm, patch, outer, vpm, vim, out, vpm,
+                                  [&](typename boost::graph_traits<TriangleMesh>::edge_descriptor e) {
+                                    return distance3(point_of<TriangleMesh>(source(e, tm), vpm),
+                                                     point_of<TriangleMesh>(target(e, tm), vpm));
+                                  });
 }
 
 } // namespace internal

@@ -1,0 +1,576 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_OPTIMIZE_FLATTENING_H
+#define CGAL_QD_OPTIMIZE_FLATTENING_H
+
+/// \file optimize_flattening.h
+/// An as-rigid-as-possible optimisation of a flattening (Liu, Zhang, Xu,
+/// Gotsman, Gortler, *A Local/Global Approach to Mesh Parameterization*, SGP
+/// 2008), started from a given UV map such as the LPFB+IP of
+/// `flatten_patch()`, with the border free, free but pulled to target edge
+/// lengths, fixed, or refitted at exact lengths; once the map has no flipped
+/// triangle, it never creates one.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/length_preserved_free_boundary.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/validation.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// how `optimize_flattening()` treats the border of the patch.
+enum class Arap_border
+{
+  /// the border moves freely (the free-boundary ARAP of Liu et al. 2008)
+  FREE,
+  /// the border vertices keep their given positions (for instance the LPFB border); only the interior moves
+  /// the border moves, and every border edge is pulled towards its target length (its 3D length, or
+  /// the one given by `CGAL_QD::parameters::border_edge_length_map`) with the weight
+  /// `CGAL_QD::parameters::border_length_weight`, relative to the cotangent weights of the faces
+  KEEP_LENGTHS,
+  FIXED,
+  /// every border edge gets its exact target length (its 3D length, or the one given by
+  /// `CGAL_QD::parameters::border_edge_length_map`): `FREE`, then the length-preserved free boundary
+  /// whose target angles are the border angles of that map (instead of the surface's), then `FIXED`
+  /// with that border. Two pieces given the same lengths on the two sides of a seam match along it.
+  LENGTH_PRESERVED
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// diagnostics of `optimize_flattening()`.
+struct Optimization_result
+{
+  Error_code status = Error_code::OK;
+  std::size_t iterations = 0;  ///< local/global iterations done
+  /// the ARAP energy sum_T sum_{edges ij of T} cot(alpha_ij) |(u_i - u_j) - R_T (x_i - x_j)|^2 divided by the
+  /// 3D area, before and after (0 for an isometry)
+  double energy_before = 0;
+  double energy_after = 0;
+  /// whether the input map had a flipped triangle (the optimisation may unfold it)
+  bool input_flipped = false;
+  /// iterations whose step was shortened so that no triangle flips
+  std::size_t shortened_steps = 0;
+  /// with `LENGTH_PRESERVED`: the status of the length-preserved free boundary fitted to the map
+  /// (`OK`, or `NOT_CONVERGED`, ...: then the map is the free one and `lengths_preserved` is false)
+  Error_code border_status = Error_code::OK;
+  /// with `LENGTH_PRESERVED`: whether every border edge has its target length (up to the border solver's tolerance)
+  bool lengths_preserved = false;
+  double time_ms = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+namespace internal {
+
+// The fixed part of an ARAP optimisation of one patch: per-face isometric
+// coordinates and cotangents, and the factorised global matrix.
+template <class Solver>
+class Arap_optimizer
+{
+public:
+  // `tri`: 3 vertex indices per face in [0, nv); `p`: 3D points by vertex;
+  // `border_edges`: pairs (i, j) of border edges, with the surface on the left
+  // of i -> j, pulled to `border_length` with weight `border_weight` (with
+  // KEEP_LENGTHS; 0 otherwise).
+  Arap_optimizer(std::size_t nv, const std::vector<std::array<std::size_t, 3>>& tri,
+                 const std::vector<std::array<double, 3>>& p, const std::vector<std::array<std::size_t, 2>>& border_edges,
+                 const std::vector<double>& border_length, double border_weight, const Solver& solver)
+      : m_nv(nv), m_tri(tri), m_border(border_edges), m_lambda(border_weight), m_length(border_length),
+        m_solver(solver)
+  {
+    const std::size_t nf = tri.size();
+    m_x.resize(nf);
+    m_cot.resize(nf);
+    m_area = 0;
+    for(std::size_t f = 0; f < nf; ++f) {
+      const std::array<double, 3>&a = p[tri[f][0]], &b = p[tri[f][1]], &c = p[tri[f][2]];
+      const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+      const double d = (e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2]) / l1;
+      const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+                   cz = e1[0] * e2[1] - e1[1] * e2[0];
+      const double h = std::sqrt(cx * cx + cy * cy + cz * cz) / l1;
+      m_x[f] = {{{0., 0.}, {l1, 0.}, {d, h}}};
+      m_area += 0.5 * l1 * h;
+      for(int k = 0; k < 3; ++k) {
+        const std::array<double, 2>&o = m_x[f][k], &q = m_x[f][(k + 1) % 3], &r = m_x[f][(k + 2) % 3];
+        const double u[2] = {q[0] - o[0], q[1] - o[1]}, w[2] = {r[0] - o[0], r[1] - o[1]};
+        m_cot[f][k] = (u[0] * w[0] + u[1] * w[1]) / std::abs(u[0] * w[1] - u[1] * w[0]);
+      }
+    }
+  }
+
+  // Factorises the global matrix; `fixed[i]` marks the vertices that keep
+  // their position (the border with FIXED, else one pinned vertex).
+  bool factorize(const std::vector<char>& fixed)
+  {
+    m_row.assign(m_nv, -1);
+    m_unknowns = 0;
+    for(std::size_t i = 0; i < m_nv; ++i)
+      if(!fixed[i]) m_row[i] = static_cast<long>(m_unknowns++);
+    if(m_unknowns == 0) return true;
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(9 * m_tri.size() + 4 * m_border.size());
+    auto add_edge = [&](std::size_t i, std::size_t j, double w) {
+      const long ri = m_row[i], rj = m_row[j];
+      if(ri >= 0) t.emplace_back(ri, ri, w);
+      if(rj >= 0) t.emplace_back(rj, rj, w);
+      if(ri >= 0 && rj >= 0) t.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), -w);
+    };
+    for(std::size_t f = 0; f < m_tri.size(); ++f)
+      for(int k = 0; k < 3; ++k) add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k]);
+    if(m_lambda > 0)
+      for(const auto& e : m_border) add_edge(e[0], e[1], m_lambda);
+    m_matrix.resize(static_cast<Eigen::Index>(m_unknowns), static_cast<Eigen::Index>(m_unknowns));
+    m_matrix.setFromTriplets(t.begin(), t.end());
+    return m_solver.factorize(m_matrix);
+  }
+
+  // The best rotation of every face for `u`, and the energy of `u` with them.
+  double local_step(const std::vector<std::array<double, 2>>& u)
+  {
+    m_rot.resize(m_tri.size());
+    double energy = 0;
+    for(std::size_t f = 0; f < m_tri.size(); ++f) {
+      double a = 0, b = 0, c = 0, d = 0;  // sum cot du dx^T
+      for(int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        const double du[2] = {u[m_tri[f][i]][0] - u[m_tri[f][j]][0], u[m_tri[f][i]][1] - u[m_tri[f][j]][1]};
+        const double dx[2] = {m_x[f][i][0] - m_x[f][j][0], m_x[f][i][1] - m_x[f][j][1]};
+        const double w = m_cot[f][k];
+        a += w * du[0] * dx[0];
+        b += w * du[0] * dx[1];
+        c += w * du[1] * dx[0];
+        d += w * du[1] * dx[1];
+      }
+      const double s = c - b, co = a + d, n = std::sqrt(s * s + co * co);
+      m_rot[f] = n > 0 ? std::array<double, 2>{co / n, s / n} : std::array<double, 2>{1., 0.};
+      energy += face_energy(f, u);
+    }
+    return (energy + spring_energy(u)) / m_area;
+  }
+
+  double energy(const std::vector<std::array<double, 2>>& u) const
+  {
+    double e = 0;
+    for(std::size_t f = 0; f < m_tri.size(); ++f) e += face_energy(f, u);
+    return (e + spring_energy(u)) / m_area;
+  }
+
+  // The positions that minimise the energy for the current rotations.
+  bool global_step(const std::vector<std::array<double, 2>>& u, std::vector<std::array<double, 2>>& out)
+  {
+    out = u;
+    if(m_unknowns == 0) return true;
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m_unknowns), 2);
+    auto add_edge = [&](std::size_t i, std::size_t j, double w, double tx, double ty) {
+      // w |(u_i - u_j) - t|^2
+      const long ri = m_row[i], rj = m_row[j];
+      if(ri >= 0) {
+        B(ri, 0) += w * tx;
+        B(ri, 1) += w * ty;
+        if(rj < 0) {
+          B(ri, 0) += w * u[j][0];
+          B(ri, 1) += w * u[j][1];
+        }
+      }
+      if(rj >= 0) {
+        B(rj, 0) -= w * tx;
+        B(rj, 1) -= w * ty;
+        if(ri < 0) {
+          B(rj, 0) += w * u[i][0];
+          B(rj, 1) += w * u[i][1];
+        }
+      }
+    };
+    for(std::size_t f = 0; f < m_tri.size(); ++f)
+      for(int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        const double dx[2] = {m_x[f][i][0] - m_x[f][j][0], m_x[f][i][1] - m_x[f][j][1]};
+        const std::array<double, 2>& r = m_rot[f];
+        add_edge(m_tri[f][i], m_tri[f][j], m_cot[f][k], r[0] * dx[0] - r[1] * dx[1], r[1] * dx[0] + r[0] * dx[1]);
+      }
+    if(m_lambda > 0)
+      for(std::size_t e = 0; e < m_border.size(); ++e) {
+        const std::size_t i = m_border[e][0], j = m_border[e][1];
+        const double dx = u[i][0] - u[j][0], dy = u[i][1] - u[j][1], n = std::sqrt(dx * dx + dy * dy);
+        if(n > 0) add_edge(i, j, m_lambda, m_length[e] * dx / n, m_length[e] * dy / n);
+      }
+    Eigen::MatrixXd X;
+    if(!m_solver.solve(B, X) || !X.allFinite()) return false;
+    for(std::size_t i = 0; i < m_nv; ++i)
+      if(m_row[i] >= 0) out[i] = {X(m_row[i], 0), X(m_row[i], 1)};
+    return true;
+  }
+
+  // whether the face has a positive orientation
+  bool positive(std::size_t f, const std::vector<std::array<double, 2>>& u) const
+  {
+    const std::array<double, 2>&a = u[m_tri[f][0]], &b = u[m_tri[f][1]], &c = u[m_tri[f][2]];
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) > 0;
+  }
+
+  bool has_flip(const std::vector<std::array<double, 2>>& u) const
+  {
+    for(std::size_t f = 0; f < m_tri.size(); ++f)
+      if(!positive(f, u)) return true;
+    return false;
+  }
+
+private:
+  // lambda sum (|u_i - u_j| - l)^2 over the border edges pulled to their lengths
+  double spring_energy(const std::vector<std::array<double, 2>>& u) const
+  {
+    double e = 0;
+    if(m_lambda > 0)
+      for(std::size_t k = 0; k < m_border.size(); ++k) {
+        const std::size_t i = m_border[k][0], j = m_border[k][1];
+        const double d = std::hypot(u[i][0] - u[j][0], u[i][1] - u[j][1]) - m_length[k];
+        e += m_lambda * d * d;
+      }
+    return e;
+  }
+
+  double face_energy(std::size_t f, const std::vector<std::array<double, 2>>& u) const
+  {
+    double e = 0;
+    const std::array<double, 2>& r = m_rot[f];
+    for(int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double dx[2] = {m_x[f][i][0] - m_x[f][j][0], m_x[f][i][1] - m_x[f][j][1]};
+      const double ex = u[m_tri[f][i]][0] - u[m_tri[f][j]][0] - (r[0] * dx[0] - r[1] * dx[1]);
+      const double ey = u[m_tri[f][i]][1] - u[m_tri[f][j]][1] - (r[1] * dx[0] + r[0] * dx[1]);
+      e += m_cot[f][k] * (ex * ex + ey * ey);
+    }
+    return e;
+  }
+
+  std::size_t m_nv;
+  const std::vector<std::array<std::size_t, 3>>& m_tri;
+  const std::vector<std::array<std::size_t, 2>>& m_border;
+  double m_lambda;
+  const std::vector<double>& m_length;  // target length of every border edge
+  Solver m_solver;
+  std::vector<std::array<std::array<double, 2>, 3>> m_x;  // isometric coordinates of every face
+  std::vector<std::array<double, 3>> m_cot;               // cotangent of the corner k, weighing the opposite edge
+  std::vector<std::array<double, 2>> m_rot;               // cos, sin of every face's rotation
+  std::vector<long> m_row;
+  std::size_t m_unknowns = 0;
+  double m_area = 0;
+  Eigen::SparseMatrix<double> m_matrix;
+};
+
+// the points (u, v, 0) of a map stored by vertex index, as a readable point map
+template <class VIM>
+struct Planar_point_map
+{
+  struct Point
+  {
+    double px, py;
+    double x() const { return px; }
+    double y() const { return py; }
+    double z() const { return 0.; }
+  };
+  typedef typename boost::property_traits<VIM>::key_type key_type;
+  typedef Point value_type;
+  typedef Point reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<std::array<double, 2>>* u;
+  VIM vim;
+  friend Point get(const Planar_point_map& m, const key_type& k)
+  {
+    const std::array<double, 2>& q = (*m.u)[get(m.vim, k)];
+    return Point{q[0], q[1]};
+  }
+};
+
+// the target length of a border edge: its 3D length, or a given map's value
+template <class TriangleMesh, class VPM>
+struct Edge_length_3
+{
+  const TriangleMesh* tm;
+  VPM vpm;
+  double operator()(typename boost::graph_traits<TriangleMesh>::edge_descriptor e) const
+  {
+    return distance3(point_of<TriangleMesh>(source(e, *tm), vpm), point_of<TriangleMesh>(target(e, *tm), vpm));
+  }
+};
+
+template <class Map>
+struct Edge_length_from_map
+{
+  Map map;
+  template <class Edge>
+  double operator()(const Edge& e) const { return double(get(map, e)); }
+};
+
+template <class TriangleMesh, class VPM, class NamedParameters>
+Edge_length_3<TriangleMesh, VPM> border_length_functor(const TriangleMesh& tm, const VPM& vpm, const NamedParameters&,
+                                                       CGAL::Tag_true /* default */)
+{
+  return {&tm, vpm};
+}
+
+template <class TriangleMesh, class VPM, class NamedParameters>
+auto border_length_functor(const TriangleMesh&, const VPM&, const NamedParameters& np, CGAL::Tag_false)
+{
+  auto map = CGAL::parameters::get_parameter(np, internal_np::border_edge_length_map_t());
+  return Edge_length_from_map<decltype(map)>{map};
+}
+
+struct Arap_options
+{
+  std::size_t iterations = 30;
+  Arap_border border = Arap_border::LENGTH_PRESERVED;
+  double border_length_weight = 10.;
+  // stop when an iteration lowers the energy by less than this fraction
+  double relative_decrease = 1e-4;
+};
+
+// Optimises `u` (by vertex index) in place; see `optimize_flattening()`.
+template <class Solver>
+Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<std::array<std::size_t, 3>>& tri,
+                                             const std::vector<std::array<double, 3>>& p,
+                                             const std::vector<std::array<std::size_t, 2>>& border_edges,
+                                             const std::vector<double>& border_length,
+                                             std::vector<std::array<double, 2>>& u, const Arap_options& opt,
+                                             const Solver& solver)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Optimization_result result;
+  Arap_optimizer<Solver> arap(nv, tri, p, border_edges, border_length,
+                              opt.border == Arap_border::KEEP_LENGTHS ? opt.border_length_weight : 0., solver);
+  std::vector<char> fixed(nv, 0);
+  if(opt.border == Arap_border::FIXED) {
+    for(const auto& e : border_edges) fixed[e[0]] = fixed[e[1]] = 1;
+  } else if(nv > 0) {
+    fixed[tri.front()[0]] = 1;  // translation
+  }
+  if(!arap.factorize(fixed)) {
+    result.status = Error_code::SOLVER_FAILED;
+    result.time_ms = milliseconds_since(start);
+    return result;
+  }
+  double energy = arap.local_step(u);
+  result.energy_before = result.energy_after = energy;
+  result.input_flipped = arap.has_flip(u);
+  bool flip_free = !result.input_flipped;
+  std::vector<std::array<double, 2>> next, trial;
+  for(std::size_t it = 0; it < opt.iterations; ++it) {
+    if(!arap.global_step(u, next)) {
+      result.status = Error_code::SOLVER_FAILED;
+      break;
+    }
+    // once the map is flip-free, a step that would flip a face is shortened
+    if(flip_free && arap.has_flip(next)) {
+      double t = 0.5;
+      bool found = false;
+      for(int k = 0; k < 10 && !found; ++k, t *= 0.5) {
+        trial = u;
+        for(std::size_t i = 0; i < nv; ++i)
+          for(int c = 0; c < 2; ++c) trial[i][c] = (1 - t) * u[i][c] + t * next[i][c];
+        found = !arap.has_flip(trial);
+      }
+      ++result.shortened_steps;
+      if(!found) break;
+      next.swap(trial);
+    }
+    u.swap(next);
+    ++result.iterations;
+    flip_free = flip_free || !arap.has_flip(u);
+    const double e = arap.local_step(u);
+    const bool small = energy - e <= opt.relative_decrease * energy;
+    energy = e;
+    if(small) break;
+  }
+  result.energy_after = energy;
+  result.time_ms = milliseconds_since(start);
+  return result;
+}
+
+} // namespace internal
+
+/// \ingroup PkgCGAL_QDRef
+/// improves the flattening `uv` of a triangle patch by the local/global
+/// as-rigid-as-possible iteration (Liu et al. 2008): each face takes the
+/// rotation that best maps its 3D shape onto its current image, then all
+/// vertices move to the positions that best fit the rotated faces (one sparse
+/// factorisation, two solves per iteration). Started from LPFB+IP
+/// (`flatten_patch()`), it removes most of the area distortion of charts
+/// whose LPFB+IP folds or stretches, where the border is far from convex.
+///
+/// Once the map has no flipped triangle, no step creates one: a step that
+/// would flip a face is shortened (halved up to ten times; the iteration stops
+/// if no length works). A map that starts with flipped faces may unfold.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexUVMap a model of `ReadWritePropertyMap` from vertices to a 2D
+///         point type constructible from two `double`
+/// \param tm a connected triangle patch with at least one border loop
+/// \param uv the start (read), then the result (written) for every vertex
+/// \param np optional named parameters:
+///   - `CGAL_QD::parameters::arap_border`: an `Arap_border` (default `LENGTH_PRESERVED`)
+///   - `CGAL_QD::parameters::border_edge_length_map`: with `KEEP_LENGTHS` or `LENGTH_PRESERVED`, a
+///     readable property map from edges to the target length (a positive `double`) of every border
+///     edge; default: the 3D length
+///   - `CGAL_QD::parameters::border_length_weight`: with `KEEP_LENGTHS`, the weight of the border
+///     edge lengths relative to the cotangent weights of the faces (default 10)
+///   - `number_of_iterations`: at most this many iterations (default 30); the iteration also stops
+///     when one lowers the energy by less than 1e-4 of itself
+///   - `CGAL_QD::parameters::sparse_solver`: as in `flatten_patch()`
+///   - `vertex_point_map`, `vertex_index_map`
+/// \returns an `Optimization_result`: `EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
+///          `INVALID_COORDINATES` (a non-finite point or UV), `DEGENERATE_FACE`,
+///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite)
+///          on invalid input, `SOLVER_FAILED` if the system could not
+///          be solved; in those cases nothing is written.
+/// \sa `flatten_patch()`
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
+
+  Optimization_result result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  auto solver = internal::unwrap(
+      choose_parameter<Default_flattening_solver>(get_parameter(np, internal_np::sparse_solver_t())));
+  internal::Arap_options opt;
+  opt.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), opt.iterations);
+  opt.border = choose_parameter(get_parameter(np, internal_np::arap_border_t()), opt.border);
+  opt.border_length_weight =
+      choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), opt.border_length_weight);
+
+  if(faces(tm).empty()) {
+    result.status = Error_code::EMPTY_MESH;
+    return result;
+  }
+  const std::size_t nv = num_vertices(tm);
+  std::vector<std::array<double, 3>> p(nv);
+  std::vector<std::array<double, 2>> u(nv, {0., 0.});
+  for(vertex_descriptor v : vertices(tm)) {
+    const std::size_t i = get(vim, v);
+    p[i] = internal::point_of<TriangleMesh>(v, vpm);
+    const Point_2 q = get(uv, v);
+    u[i] = {CGAL::to_double(q.x()), CGAL::to_double(q.y())};
+    if(!std::isfinite(p[i][0]) || !std::isfinite(p[i][1]) || !std::isfinite(p[i][2]) || !std::isfinite(u[i][0]) ||
+       !std::isfinite(u[i][1])) {
+      result.status = Error_code::INVALID_COORDINATES;
+      return result;
+    }
+  }
+  std::vector<std::array<std::size_t, 3>> tri;
+  tri.reserve(num_faces(tm));
+  for(face_descriptor f : faces(tm)) {
+    if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3) {
+      result.status = Error_code::NOT_TRIANGLE_MESH;
+      return result;
+    }
+    const halfedge_descriptor h = halfedge(f, tm);
+    tri.push_back({get(vim, source(h, tm)), get(vim, target(h, tm)), get(vim, target(next(h, tm), tm))});
+    if(internal::double_area3(p[tri.back()[0]], p[tri.back()[1]], p[tri.back()[2]]) <= 0) {
+      result.status = Error_code::DEGENERATE_FACE;
+      return result;
+    }
+  }
+  const auto length_of = internal::border_length_functor(
+      tm, vpm, np,
+      typename CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_edge_length_map_t>::type());
+  std::vector<std::array<std::size_t, 2>> border_edges;
+  std::vector<double> border_length;
+  for(halfedge_descriptor h : halfedges(tm))
+    if(is_border(opposite(h, tm), tm)) {
+      border_edges.push_back({get(vim, source(h, tm)), get(vim, target(h, tm))});
+      border_length.push_back(length_of(edge(h, tm)));
+      if(!(border_length.back() > 0) || !std::isfinite(border_length.back())) {
+        result.status = Error_code::DEGENERATE_EDGE;
+        return result;
+      }
+    }
+  if(border_edges.empty()) {
+    result.status = Error_code::NO_BORDER;
+    return result;
+  }
+  const Arap_border mode = opt.border;
+  if(mode == Arap_border::LENGTH_PRESERVED) opt.border = Arap_border::FREE;
+  result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver);
+  if(!result) return result;
+  if(mode == Arap_border::LENGTH_PRESERVED) {
+    // the LPFB whose target angles are the angles of the free map
+    std::vector<internal::Uv_pair> border_uv(nv, {0., 0.});
+    std::vector<char> on_border(nv, 0);
+    typedef typename std::remove_const<decltype(vim)>::type VIM;
+    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    const Free_boundary_result b = internal::length_preserved_free_boundary_impl(
+        tm, *faces(tm).begin(), true, GT::null_halfedge(), internal::Indexed_uv_map<VIM>{&border_uv, vim}, vpm, vim,
+        fim, internal::lpfb_options_from(np), [&](vertex_descriptor v) { on_border[get(vim, v)] = 1; },
+        internal::Planar_point_map<VIM>{&u, vim}, length_of);
+    result.border_status = b.status;
+    if(b) {
+      // the rigid motion that best puts the new border onto the free map's
+      std::vector<std::size_t> ids;
+      for(std::size_t i = 0; i < nv; ++i)
+        if(on_border[i]) ids.push_back(i);
+      double cb[2] = {0., 0.}, cu[2] = {0., 0.};
+      for(std::size_t i : ids) {
+        cb[0] += border_uv[i].x / ids.size();
+        cb[1] += border_uv[i].y / ids.size();
+        cu[0] += u[i][0] / ids.size();
+        cu[1] += u[i][1] / ids.size();
+      }
+      double dot = 0, cross = 0;
+      for(std::size_t i : ids) {
+        const double bx = border_uv[i].x - cb[0], by = border_uv[i].y - cb[1];
+        const double ux = u[i][0] - cu[0], uy = u[i][1] - cu[1];
+        dot += bx * ux + by * uy;
+        cross += bx * uy - by * ux;
+      }
+      const double n = std::hypot(dot, cross), c = n > 0 ? dot / n : 1., s = n > 0 ? cross / n : 0.;
+      for(std::size_t i : ids) {
+        const double bx = border_uv[i].x - cb[0], by = border_uv[i].y - cb[1];
+        u[i] = {cu[0] + c * bx - s * by, cu[1] + s * bx + c * by};
+      }
+      opt.border = Arap_border::FIXED;
+      const Optimization_result fixed = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver);
+      if(!fixed) return fixed;
+      result.iterations += fixed.iterations;
+      result.shortened_steps += fixed.shortened_steps;
+      result.energy_after = fixed.energy_after;
+      result.time_ms += fixed.time_ms;
+      result.lengths_preserved = true;
+    }
+  }
+  for(vertex_descriptor v : vertices(tm)) put(uv, v, Point_2(u[get(vim, v)][0], u[get(vim, v)][1]));
+  return result;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_OPTIMIZE_FLATTENING_H
