@@ -164,11 +164,14 @@ public:
   // `faces` in increasing face index; `corner_uv`, if given, receives the UVs
   // of the corners (3 per face, in the order of `faces`). `border_target`, if
   // given, holds per corner the target 2D length of the edge that ends at it
-  // (used for the border edges of the chart cut open).
+  // (used for the border edges of the chart cut open), and `start_uv` the
+  // chart's flattening by corner, fitted to those lengths instead of
+  // flattening the chart again.
   template <class IsCut>
   Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
                         std::vector<std::array<double, 2>>* corner_uv = nullptr,
-                        const std::vector<double>* border_target = nullptr) const
+                        const std::vector<double>* border_target = nullptr,
+                        const std::vector<std::array<double, 2>>* start_uv = nullptr) const
   {
     Chart_report rep;
     rep.number_of_faces = faces.size();
@@ -197,20 +200,23 @@ public:
                                m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 1]])],
                                m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 2]])]) / 2;
     }
-    auto uv = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
-    const Flattening_result flat = flatten_patch(sm, uv);
-    rep.number_of_border_loops = flat.border.number_of_loops;
-    if(!flat) {
-      rep.status = flat.status;
-      return rep;
-    }
-    if(!measure(sm, uv, rep)) return rep;
-    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
-    if(!paper && border_target) {
-      // LPFB+IP, free-boundary ARAP, then the border fitted to the given
-      // lengths and the interior optimised with it; used whether or not
-      // LPFB+IP is accepted, so that the seams match
-      auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
+    typedef typename Mesh::Vertex_index V;
+    auto uv = sm.template add_property_map<V, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
+    auto write_corner_uv = [&] {
+      if(!corner_uv) return;
+      corner_uv->resize(3 * faces.size());
+      for(std::size_t c = 0; c < 3 * faces.size(); ++c) {
+        const K::Point_2& p = get(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])));
+        (*corner_uv)[c] = {p.x(), p.y()};
+      }
+    };
+    if(border_target) {
+      // the chart's flattening `start_uv` with its border edges pulled to the
+      // given lengths, with a weight that makes them hold to a fraction of a
+      // percent: the seams of the pieces match
+      for(std::size_t c = 0; c < 3 * faces.size(); ++c)
+        put(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])),
+            K::Point_2((*start_uv)[c][0], (*start_uv)[c][1]));
       auto goal = sm.template add_property_map<typename Mesh::Edge_index, double>("e:goal", 0.).first;
       for(std::size_t i = 0; i < faces.size(); ++i)
         for(auto h : CGAL::halfedges_around_face(halfedge(typename Mesh::Face_index(
@@ -219,25 +225,33 @@ public:
           while(k < 2 && wedges.wedge_of_corner[3 * i + k] != std::size_t(target(h, sm))) ++k;
           put(goal, edge(h, sm), (*border_target)[3 * i + k]);
         }
-      for(auto v : vertices(sm)) put(opt, v, get(uv, v));
-      optimize_flattening(sm, opt, trial_parameters());
-      // the border edges pulled to the common lengths with a weight that makes
-      // them hold to a fraction of a percent
+      for(auto h : halfedges(sm))  // the border loops, each counted at its smallest halfedge
+        if(is_border(h, sm)) {
+          auto g = next(h, sm);
+          while(g != h && h < g) g = next(g, sm);
+          if(g == h) ++rep.number_of_border_loops;
+        }
       const Optimization_result o = optimize_flattening(
-          sm, opt,
+          sm, uv,
           parameters::arap_border(Arap_border::KEEP_LENGTHS,
                                   parameters::border_edge_length_map(goal, parameters::border_length_weight(1000.))));
-      Chart_report matched = rep;
-      const bool ok = o && measure(sm, opt, matched);
-      if(ok) {
-        matched.optimized = true;
-        matched.lengths_matched = true;
-        rep = matched;
-        uv = opt;
+      if(o && measure(sm, uv, rep)) {
+        rep.optimized = rep.lengths_matched = true;
+        write_corner_uv();
       } else {
         rep.accepted = false;  // the caller keeps its earlier flattening
       }
-    } else if(!paper && (!rep.accepted || corner_uv)) {
+      return rep;
+    }
+    const Flattening_result flat = flatten_patch(sm, uv);
+    rep.number_of_border_loops = flat.border.number_of_loops;
+    if(!flat) {
+      rep.status = flat.status;
+      return rep;
+    }
+    if(!measure(sm, uv, rep)) return rep;
+    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
+    if(!paper && (!rep.accepted || corner_uv)) {
       // free-boundary ARAP started from LPFB+IP; kept when it is accepted and
       // LPFB+IP is not, or when both are and it has less local area distortion
       auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
@@ -251,14 +265,7 @@ public:
         uv = opt;
       }
     }
-    if(corner_uv) {
-      corner_uv->resize(3 * faces.size());
-      for(std::size_t c = 0; c < 3 * faces.size(); ++c) {
-        const K::Point_2& p = get(uv, typename Mesh::Vertex_index(
-                                          static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])));
-        (*corner_uv)[c] = {p.x(), p.y()};
-      }
-    }
+    write_corner_uv();
     return rep;
   }
 

@@ -172,11 +172,8 @@ Free_boundary_result length_preserved_free_boundary_impl(
     VertexUVMap uv, const VPM& vpm, const VIM& vim, const FIM& fim, const Lpfb_options& options,
     OnWrite on_write = OnWrite())
 {
-  return length_preserved_free_boundary_impl(
-      tm, start_face, require_single_component, border, uv, vpm, vim, fim, options, on_write, vpm,
-      [&](typename boost::graph_traits<TriangleMesh>::edge_descriptor e) {
-        return distance3(point_of<TriangleMesh>(source(e, tm), vpm), point_of<TriangleMesh>(target(e, tm), vpm));
-      });
+  return length_preserved_free_boundary_impl(tm, start_face, require_single_component, border, uv, vpm, vim, fim,
+                                             options, on_write, vpm, Edge_length_3<TriangleMesh, VPM>{&tm, vpm});
 }
 
 template <class NamedParameters>

@@ -303,18 +303,7 @@ struct Planar_point_map
   }
 };
 
-// the target length of a border edge: its 3D length, or a given map's value
-template <class TriangleMesh, class VPM>
-struct Edge_length_3
-{
-  const TriangleMesh* tm;
-  VPM vpm;
-  double operator()(typename boost::graph_traits<TriangleMesh>::edge_descriptor e) const
-  {
-    return distance3(point_of<TriangleMesh>(source(e, *tm), vpm), point_of<TriangleMesh>(target(e, *tm), vpm));
-  }
-};
-
+// the target length of a border edge: its 3D length (`Edge_length_3`), or a given map's value
 template <class Map>
 struct Edge_length_from_map
 {
@@ -327,7 +316,7 @@ template <class TriangleMesh, class VPM, class NamedParameters>
 Edge_length_3<TriangleMesh, VPM> border_length_functor(const TriangleMesh& tm, const VPM& vpm, const NamedParameters&,
                                                        CGAL::Tag_true /* default */)
 {
-  return {&tm, vpm};
+  return Edge_length_3<TriangleMesh, VPM>{&tm, vpm};
 }
 
 template <class TriangleMesh, class VPM, class NamedParameters>

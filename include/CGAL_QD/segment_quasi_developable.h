@@ -254,6 +254,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
     // lengths, or the length in a chart whose flattening cannot be fitted
     // (kept as it is); a chart is fitted again when a neighbour is kept
     std::vector<char> kept(n, 0), todo(n, 1);
+    const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
     const std::vector<std::vector<halfedge_descriptor>> curves = merger.remaining_curves();
     std::vector<double> factor(num_halfedges(tm), 1.);
     for(int round = 0; round < 3; ++round) {
@@ -289,7 +290,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
       internal::for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t t) {
         const std::size_t k = list[t];
         fitted[t] = evaluator.evaluate(members[k], [&](halfedge_descriptor h) { return merger.is_seam(h); },
-                                       &fitted_uv[t], &target[k]);
+                                       &fitted_uv[t], &target[k], &first_uvs[k]);
       });
       std::fill(todo.begin(), todo.end(), 0);
       bool again = false;

@@ -233,15 +233,23 @@ bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>&
   return true;
 }
 
+// the 3D length of an edge
+template <class TriangleMesh, class VPM>
+struct Edge_length_3
+{
+  const TriangleMesh* tm;
+  VPM vpm;
+  double operator()(typename boost::graph_traits<TriangleMesh>::edge_descriptor e) const
+  {
+    return distance3(point_of<TriangleMesh>(source(e, *tm), vpm), point_of<TriangleMesh>(target(e, *tm), vpm));
+  }
+};
+
 template <class TriangleMesh, class VPM, class VIM>
 bool build_virtual_cut_border(const TriangleMesh& tm, const Patch<TriangleMesh>& patch, std::size_t outer,
                               const VPM& vpm, const VIM& vim, Virtual_cut_border<TriangleMesh>& out)
 {
-  return build_virtual_cut_border(tm, patch, outer, vpm, vim, out, vpm,
-                                  [&](typename boost::graph_traits<TriangleMesh>::edge_descriptor e) {
-                                    return distance3(point_of<TriangleMesh>(source(e, tm), vpm),
-                                                     point_of<TriangleMesh>(target(e, tm), vpm));
-                                  });
+  return build_virtual_cut_border(tm, patch, outer, vpm, vim, out, vpm, Edge_length_3<TriangleMesh, VPM>{&tm, vpm});
 }
 
 } // namespace internal
