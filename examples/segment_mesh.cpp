@@ -15,11 +15,17 @@
 // saying why, exit code 1 and no output file. On a terminal a progress bar runs on standard error unless
 // --quiet.
 //
+// The seams of the segmentation follow triangle edges; by default they are
+// then replaced by smooth curves through the triangles
+// (CGAL_QD::smooth_chart_boundaries()), the charts flattened again
+// (CGAL_QD::flatten_charts()), and the smoothed mesh is kept if every chart is
+// still within the thresholds (--no-smooth-seams keeps the edge seams).
+//
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
 //                     [--max-stretch 2.0] [--max-local-area-distortion 0.025]
 //                     [--criterion lpfb-ip-arap|lpfb-ip] [--arap-border free|keep-lengths]
-//                     [--denoise | --no-denoise] [--no-refine] [--no-merge]
+//                     [--denoise | --no-denoise] [--no-refine] [--no-merge] [--no-smooth-seams]
 //                     [--merge-order largest|smallest|relative|compact] [--sequential]
 //                     [--json] [--verbose] [--quiet]
 
@@ -28,7 +34,9 @@
 #include <CGAL_QD/IO/read_mesh.h>
 #include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
+#include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/smooth_chart_boundaries.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -57,7 +65,8 @@ int usage()
                "                    [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
                "                    [--max-local-area-distortion 0.025] [--criterion lpfb-ip-arap|lpfb-ip]\n"
                "                    [--arap-border free|keep-lengths]\n"
-               "                    [--denoise | --no-denoise] [--no-refine] [--no-merge] [--merge-order largest|smallest|relative|compact]\n"
+               "                    [--denoise | --no-denoise] [--no-refine] [--no-merge] [--no-smooth-seams]\n"
+               "                    [--merge-order largest|smallest|relative|compact]\n"
                "                    [--sequential] [--json] [--verbose] [--quiet]\n";
   return EXIT_FAILURE;
 }
@@ -79,8 +88,17 @@ std::string number(double x)
   return buffer;
 }
 
+// what the seam smoothing did
+struct Smoothing
+{
+  bool requested = false, kept = false;
+  CGAL_QD::Boundary_smoothing_result result;
+  std::size_t rejected_charts = 0;  // after smoothing, when it was not kept
+  std::size_t curves = 0;           // the border curves of the segmentation
+};
+
 template <class Result>
-void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report& input)
+void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report& input, const Smoothing& smoothing)
 {
   out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": " << r.number_of_faces
             << ", \"repairs\": [";
@@ -103,7 +121,18 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
             << ", \"time_denoise_ms\": " << number(r.time_denoise_ms)
             << ", \"time_merge_ms\": " << number(r.time_merge_ms)
             << ", \"time_flatten_ms\": " << number(r.time_flatten_ms)
-            << ", \"time_total_ms\": " << number(r.time_total_ms) << ", \"per_chart\": [";
+            << ", \"time_total_ms\": " << number(r.time_total_ms);
+  if(smoothing.requested)
+    out << ", \"seam_smoothing\": {\"kept\": " << (smoothing.kept ? "true" : "false")
+        << ", \"curves\": " << smoothing.curves
+        << ", \"curves_smoothed\": " << smoothing.result.curves_smoothed
+        << ", \"curves_failed\": " << smoothing.result.curves_failed
+        << ", \"zigzag_before\": " << number(smoothing.result.zigzag_before)
+        << ", \"zigzag_after\": " << number(smoothing.result.zigzag_after)
+        << ", \"vertices_added\": " << smoothing.result.vertices_added
+        << ", \"rejected_charts\": " << smoothing.rejected_charts
+        << ", \"time_ms\": " << number(smoothing.result.time_ms) << "}";
+  out << ", \"per_chart\": [";
   for(std::size_t k = 0; k < r.charts.size(); ++k) {
     const CGAL_QD::Chart_report& c = r.charts[k];
     out << (k ? ", " : "") << "{\"chart\": " << k << ", \"status\": \"" << CGAL_QD::error_message(c.status)
@@ -129,7 +158,8 @@ int main(int argc, char** argv)
   const std::string path = argv[1];
   double vsa_tolerance = 0.25, max_area = 0.10, max_stretch = 2.0, max_local = 0.025;
   CGAL_QD::Chart_criterion criterion = CGAL_QD::Chart_criterion::LPFB_IP_THEN_ARAP;
-  bool json = false, verbose = false, quiet = false, denoise = false, refine = true, merge = true, sequential = false;
+  bool json = false, verbose = false, quiet = false, denoise = false, refine = true, merge = true, sequential = false,
+       smooth_seams = true;
   CGAL_QD::Merge_order order = CGAL_QD::Merge_order::SMALLEST_AREA_FIRST;
   CGAL_QD::Arap_border arap_border = CGAL_QD::Arap_border::FREE;
   std::string out_dir;
@@ -143,6 +173,7 @@ int main(int argc, char** argv)
     else if(a == "--no-denoise") denoise = false;  // the default
     else if(a == "--no-refine") refine = false;
     else if(a == "--no-merge") merge = false;
+    else if(a == "--no-smooth-seams") smooth_seams = false;
     else if(a == "--sequential") sequential = true;
     else if(a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
     else if(a == "--scale") { if(!read_number(i, argc, argv, pattern.scale)) return usage(); }
@@ -220,9 +251,54 @@ int main(int argc, char** argv)
                                                                              order, CGAL::parameters::verbose(verbose).callback(
                                                                                         std::function<void(const char*, double)>(
                                                                                             progress))))))))))));
-  const CGAL_QD::Segmentation_result<Mesh> r =
+  CGAL_QD::Segmentation_result<Mesh> r =
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
+  // smooth seams through the triangles, on a copy of the mesh kept only if
+  // every chart still flattens within the thresholds; the curves around a
+  // chart that does not are left along the edges, and the others tried again
+  Smoothing smoothing;
+  Mesh smoothed;
+  if(r && smooth_seams && r.number_of_charts > 1) {
+    smoothing.requested = true;
+    std::vector<char> frozen(r.number_of_charts, 0);  // charts whose borders stay along the edges
+    for(int round = 0; round < 4 && !smoothing.kept; ++round) {
+      smoothed = mesh;
+      auto smoothed_chart = smoothed.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
+      auto keep = smoothed.add_property_map<Mesh::Edge_index, bool>("e:keep", false).first;
+      for(Mesh::Edge_index e : r.seam_edges) {
+        const Mesh::Halfedge_index h = smoothed.halfedge(e);
+        const std::size_t a = get(smoothed_chart, smoothed.face(h)), b = get(smoothed_chart, smoothed.face(smoothed.opposite(h)));
+        if(a == b || frozen[a] || frozen[b]) put(keep, e, true);
+      }
+      smoothing.result =
+          CGAL_QD::smooth_chart_boundaries(smoothed, smoothed_chart, CGAL::parameters::edge_is_constrained_map(keep));
+      if(round == 0) smoothing.curves = smoothing.result.number_of_curves;
+      if(!smoothing.result || smoothing.result.curves_smoothed == 0) break;
+      // the cuts inside charts are kept, and so are the halves of a cut edge
+      // that the smoothing split: with the kept borders, they are the seams
+      const auto fnp = QP::max_local_area_distortion(
+          max_local, QP::chart_criterion(criterion, QP::max_area_distortion(max_area, QP::max_l2_stretch(
+                                                        max_stretch, CGAL::parameters::edge_is_constrained_map(keep)))));
+      const CGAL_QD::Chart_flattening_result<Mesh> f =
+          sequential ? CGAL_QD::flatten_charts<CGAL::Sequential_tag>(smoothed, smoothed_chart, fnp)
+                     : CGAL_QD::flatten_charts<CGAL::Parallel_if_available_tag>(smoothed, smoothed_chart, fnp);
+      smoothing.rejected_charts = f.rejected_charts;
+      if(!f || f.number_of_charts != r.number_of_charts) break;
+      if(f.rejected_charts == 0) {
+        smoothing.kept = true;
+        const double total = r.time_total_ms + smoothing.result.time_ms + f.time_flatten_ms;
+        static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = f;
+        r.time_total_ms = total;
+      } else {
+        for(std::size_t k = 0; k < f.charts.size(); ++k)
+          if(!f.charts[k].accepted) frozen[k] = 1;
+      }
+    }
+    if(!smoothing.kept) smoothed = Mesh();
+  }
+  const Mesh& out_mesh = smoothing.kept ? smoothed : mesh;
+  const auto out_chart = out_mesh.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
   if(bar) std::fprintf(stderr, "\r%60s\r", "");
   std::string written;
   CGAL_QD::IO::Pattern_result pages;
@@ -230,15 +306,15 @@ int main(int argc, char** argv)
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     const std::filesystem::path dir(out_dir);
-    const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(mesh, chart, r.corner_uv);
+    const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(out_mesh, out_chart, r.corner_uv);
     std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg"),
         picture(dir / "segmentation.svg"), report(dir / "report.json");
-    print_json(report, r, input);
-    const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, mesh, chart) &&
-                    CGAL_QD::IO::write_OBJ_with_uv(obj, mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
+    print_json(report, r, input, smoothing);
+    const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, out_mesh, out_chart) &&
+                    CGAL_QD::IO::write_OBJ_with_uv(obj, out_mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
                     (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
-                    (pages = CGAL_QD::IO::write_patterns_SVG(svg, mesh, chart, r.corner_uv, r.seam_edges, pattern)) &&
-                    CGAL_QD::IO::write_segmentation_SVG(picture, mesh, chart, r.seam_edges) == CGAL_QD::Error_code::OK &&
+                    (pages = CGAL_QD::IO::write_patterns_SVG(svg, out_mesh, out_chart, r.corner_uv, r.seam_edges, pattern)) &&
+                    CGAL_QD::IO::write_segmentation_SVG(picture, out_mesh, out_chart, r.seam_edges) == CGAL_QD::Error_code::OK &&
                     bool(report);
     if(!ok) {
       std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
@@ -253,7 +329,7 @@ int main(int argc, char** argv)
     written = message.str();
   }
   if(json) {
-    print_json(std::cout, r, input);
+    print_json(std::cout, r, input, smoothing);
     return r ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   if(!r) {
@@ -276,6 +352,17 @@ int main(int argc, char** argv)
             << "  seam length    " << r.seam_length << ", zigzag " << r.seam_zigzag << ", sides differ by at most "
             << 100 * r.max_seam_length_mismatch << " %\n"
             << "  compactness    " << r.compactness << "\n"
+            << "  smooth seams   "
+            << (!smoothing.requested ? std::string("off")
+                : smoothing.kept
+                    ? std::to_string(smoothing.result.curves_smoothed) + " of " +
+                          std::to_string(smoothing.curves) + " curves through the triangles, zigzag " +
+                          number(smoothing.result.zigzag_before) + " -> " + number(smoothing.result.zigzag_after)
+                    : smoothing.result.curves_smoothed == 0
+                        ? std::string("no curve could be smoothed; seams follow the triangle edges")
+                        : std::to_string(smoothing.rejected_charts) +
+                              " charts beyond the thresholds once smoothed; seams follow the triangle edges")
+            << "\n"
             << "  total          " << r.time_total_ms << " ms\n"
             << written;
   return EXIT_SUCCESS;

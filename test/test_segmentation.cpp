@@ -10,8 +10,10 @@
 #include "test_utils.h"
 
 #include <CGAL_QD/extract_chart.h>
+#include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/smooth_chart_boundaries.h>
 #include <CGAL_QD/vsa_segmentation.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -1002,6 +1004,172 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(borders_between_charts_and_slits, Mesh, Mesh_types
   BOOST_TEST(c.perimeter[1] == 4.0, tt::tolerance(1e-12));
   BOOST_TEST(c.chart_compactness[0] == 4 * pi / 25, tt::tolerance(1e-12));
   BOOST_TEST(c.compactness == (4 * pi / 25 + pi / 4) / 2, tt::tolerance(1e-12));
+}
+
+
+// ===================================================================== smooth borders, flatten given charts
+
+namespace {
+
+// a flat unit square cut by the staircase from (0, 0) to (1, 1): chart 1 below it, chart 0 above
+template <class Mesh>
+Face_map<Mesh> staircase_charts(const Mesh& tm, std::size_t n)
+{
+  Face_map<Mesh> chart;
+  for(auto f : faces(tm)) {
+    double c[2] = {0., 0.};
+    for(auto v : vertices_around_face(halfedge(f, tm), tm))
+      for(int k = 0; k < 2; ++k) c[k] += p3(tm, v)[k] / 3;
+    chart[f] = std::floor(c[0] * n) > std::floor(c[1] * n) ? 1 : 0;
+  }
+  return chart;
+}
+
+template <class Mesh>
+std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> chart_borders(const Mesh& tm,
+                                                                               const Face_map<Mesh>& chart)
+{
+  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> out;
+  for(auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    if(!is_border_edge(h, tm) && chart.at(face(h, tm)) != chart.at(face(opposite(h, tm), tm))) out.push_back(e);
+  }
+  return out;
+}
+
+template <class Mesh>
+double chart_area(const Mesh& tm, const Face_map<Mesh>& chart, std::size_t k)
+{
+  double a = 0;
+  for(auto f : faces(tm))
+    if(chart.at(f) == k) {
+      const auto h = halfedge(f, tm);
+      const P3 p = p3(tm, source(h, tm)), q = p3(tm, target(h, tm)), r = p3(tm, target(next(h, tm), tm));
+      a += 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1]));
+    }
+  return a;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(staircase_border_is_cut_smooth_through_the_triangles, Mesh, Mesh_types)
+{
+  const std::size_t n = 12;
+  Mesh tm = make<Mesh>(flat_grid(n, n));
+  Face_map<Mesh> chart = staircase_charts(tm, n);
+  const double before = QD::seam_zigzag(tm, chart_borders(tm, chart)).zigzag;
+  BOOST_REQUIRE(before > 1.1);
+  const std::size_t faces_before = num_faces(tm);
+  const QD::Boundary_smoothing_result r = QD::smooth_chart_boundaries(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_curves == 1u);
+  BOOST_TEST(r.curves_smoothed == 1u);
+  BOOST_TEST(r.zigzag_before == before, tt::tolerance(1e-12));
+  BOOST_TEST(r.zigzag_after < 1.02);
+  BOOST_TEST(r.vertices_added > 0u);
+  BOOST_TEST(num_faces(tm) == faces_before + r.faces_added);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  BOOST_TEST(CGAL::is_triangle_mesh(tm));
+  // the border measured on the refined mesh; it moved by less than the band
+  BOOST_TEST(QD::seam_zigzag(tm, chart_borders(tm, chart)).zigzag == r.zigzag_after, tt::tolerance(1e-12));
+  BOOST_TEST(r.max_border_move < 3.5 / n);
+  // every face has a chart, both charts are connected and keep the same area
+  expect_valid_charts(tm, chart, 2);
+  BOOST_TEST(chart_area(tm, chart, 0) + chart_area(tm, chart, 1) == 1.0, tt::tolerance(1e-12));
+  // the staircase gave chart 0 78 of the 144 cells; the smooth curve runs along the staircase's middle
+  BOOST_TEST(std::abs(chart_area(tm, chart, 0) - 78. / 144) < 0.5 / n);
+  // every new face is a real triangle
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    const P3 p = p3(tm, source(h, tm)), q = p3(tm, target(h, tm)), s = p3(tm, target(next(h, tm), tm));
+    BOOST_TEST(std::abs((q[0] - p[0]) * (s[1] - p[1]) - (s[0] - p[0]) * (q[1] - p[1])) > 1e-6 / (n * n));
+  }
+  // the two flat charts flatten without distortion, and the seam's sides match
+  const QD::Chart_flattening_result<Mesh> f = QD::flatten_charts(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(f);
+  BOOST_TEST(f.number_of_charts == 2u);
+  BOOST_TEST(f.rejected_charts == 0u);
+  BOOST_TEST(f.max_area_distortion < 1e-6);
+  BOOST_TEST(f.max_seam_length_mismatch < 1e-6);
+  BOOST_TEST(f.seam_zigzag == r.zigzag_after, tt::tolerance(1e-12));
+  BOOST_TEST(f.corner_uv.size() == 3 * num_faces(tm));
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(constrained_and_smooth_borders_stay, Mesh, Mesh_types)
+{
+  const std::size_t n = 12;
+  Mesh tm = make<Mesh>(flat_grid(n, n));
+  Face_map<Mesh> chart = staircase_charts(tm, n);
+  // the constrained map is written to (the halves of a split constrained edge stay constrained)
+  std::map<typename boost::graph_traits<Mesh>::edge_descriptor, bool> kept;
+  for(auto e : edges(tm)) kept[e] = false;
+  for(auto e : chart_borders(tm, chart)) kept[e] = true;
+  const auto constrained = boost::make_assoc_property_map(kept);
+  const std::size_t faces_before = num_faces(tm);
+  QD::Boundary_smoothing_result r = QD::smooth_chart_boundaries(tm, boost::make_assoc_property_map(chart),
+                                                                CGAL::parameters::edge_is_constrained_map(constrained));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.curves_smoothed == 0u);
+  BOOST_TEST(r.vertices_added == 0u);
+  BOOST_TEST(num_faces(tm) == faces_before);
+  // a straight border is left as it is
+  Mesh flat = make<Mesh>(flat_grid(n, n));
+  Face_map<Mesh> halves;
+  for(auto f : faces(flat)) {
+    double x = 0;
+    for(auto v : vertices_around_face(halfedge(f, flat), flat)) x += p3(flat, v)[0] / 3;
+    halves[f] = x < 0.5 ? 0 : 1;
+  }
+  r = QD::smooth_chart_boundaries(flat, boost::make_assoc_property_map(halves));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.curves_already_smooth == 1u);
+  BOOST_TEST(num_faces(flat) == faces_before);
+}
+
+BOOST_AUTO_TEST_CASE(smoothing_and_flattening_reject_bad_input)
+{
+  Surface_mesh empty;
+  Face_map<Surface_mesh> chart;
+  BOOST_TEST(QD::smooth_chart_boundaries(empty, boost::make_assoc_property_map(chart)).status ==
+             QD::Error_code::EMPTY_MESH);
+  BOOST_TEST(QD::flatten_charts(empty, boost::make_assoc_property_map(chart)).status == QD::Error_code::EMPTY_MESH);
+  Surface_mesh bad = make<Surface_mesh>(flat_grid(4, 4));
+  const auto v = *vertices(bad).begin();
+  bad.point(v) = Surface_mesh::Point(std::nan(""), 0, 0);
+  for(auto f : faces(bad)) chart[f] = 0;
+  const std::size_t nf = num_faces(bad);
+  BOOST_TEST(QD::smooth_chart_boundaries(bad, boost::make_assoc_property_map(chart)).status ==
+             QD::Error_code::INVALID_COORDINATES);
+  BOOST_TEST(num_faces(bad) == nf);  // nothing changed
+  BOOST_TEST(QD::flatten_charts(bad, boost::make_assoc_property_map(chart)).status ==
+             QD::Error_code::INVALID_COORDINATES);
+}
+
+BOOST_AUTO_TEST_CASE(flatten_charts_repeats_the_segmentation_s_last_step)
+{
+  // the charts of a segmentation, flattened again, give the same measures
+  const Surface_mesh tm = make<Surface_mesh>(grid(48, 12, cylinder(1.0, 1.9 * pi, 3.0)));
+  Face_map<Surface_mesh> chart;
+  const QD::Segmentation_result<Surface_mesh> s = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(s);
+  Edge_set<Surface_mesh> cuts;
+  for(auto e : s.seam_edges) {
+    const auto h = halfedge(e, tm);
+    if(chart.at(face(h, tm)) == chart.at(face(opposite(h, tm), tm))) cuts.insert(e);
+  }
+  const auto constrained = boost::make_function_property_map<Surface_mesh::Edge_index>(
+      [&](Surface_mesh::Edge_index e) { return cuts.count(e) > 0; });
+  const QD::Chart_flattening_result<Surface_mesh> f =
+      QD::flatten_charts(tm, boost::make_assoc_property_map(chart), CGAL::parameters::edge_is_constrained_map(constrained));
+  BOOST_REQUIRE(f);
+  BOOST_TEST(f.number_of_charts == s.number_of_charts);
+  BOOST_TEST(f.rejected_charts == 0u);
+  BOOST_TEST(f.seam_edges.size() == s.seam_edges.size());
+  BOOST_TEST(f.seam_length == s.seam_length, tt::tolerance(1e-9));
+  BOOST_TEST(f.max_area_distortion == s.max_area_distortion, tt::tolerance(1e-9));
+  BOOST_TEST(f.max_local_area_distortion == s.max_local_area_distortion, tt::tolerance(1e-9));
+  BOOST_TEST(f.max_seam_length_mismatch == s.max_seam_length_mismatch, tt::tolerance(1e-9));
+  BOOST_TEST(f.compactness == s.compactness, tt::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

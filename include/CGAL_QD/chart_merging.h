@@ -57,9 +57,10 @@ enum class Chart_criterion
   /// LPFB+IP, then the free-boundary ARAP of `optimize_flattening()` started from it; a flattening is
   /// accepted when A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch`, A_loc <=
   /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
-  /// runs only when LPFB+IP is not accepted. The final flattening of every chart then gives the two sides
-  /// of every seam edge a common length (the mean of their lengths in the free maps) and fits each chart's
-  /// border to those lengths (`Arap_border::LENGTH_PRESERVED`), so that the pieces match along the seams.
+  /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
+  /// the final flattening). The final flattening of every chart then gives the two sides of every seam
+  /// curve a common length (the mean of their lengths in the free maps) and pulls each chart's border to
+  /// those lengths (`Arap_border::KEEP_LENGTHS`), where the chart stays within the thresholds.
   LPFB_IP_THEN_ARAP
 };
 
@@ -263,6 +264,21 @@ public:
         better.optimized = true;
         rep = better;
         uv = opt;
+      }
+      // a trial stops after 30 iterations; a final flattening goes on until it
+      // converges (at most 70 more), kept if it is still accepted and better
+      if(corner_uv && o && o.iterations == 30) {
+        // on a copy: `uv` may now be the same map as `opt`
+        auto more = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:more", K::Point_2(0, 0)).first;
+        for(auto v : vertices(sm)) put(more, v, get(opt, v));
+        Chart_report longer = rep;
+        const Optimization_result r = optimize_flattening(sm, more, trial_parameters().number_of_iterations(70));
+        if(r && measure(sm, more, longer) && longer.accepted &&
+           (!rep.accepted || longer.local_area_distortion < rep.local_area_distortion)) {
+          longer.optimized = true;
+          rep = longer;
+          uv = more;
+        }
       }
     }
     write_corner_uv();

@@ -14,6 +14,7 @@
 #include <CGAL_QD/boundary_denoising.h>
 #include <CGAL_QD/boundary_refinement.h>
 #include <CGAL_QD/chart_merging.h>
+#include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/vsa_segmentation.h>
@@ -39,56 +40,20 @@ namespace CGAL_QD {
 /// \ingroup PkgCGAL_QDRef
 /// everything `segment_quasi_developable()` computed.
 template <class TriangleMesh>
-struct Segmentation_result
+struct Segmentation_result : Chart_flattening_result<TriangleMesh>
 {
-  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
-
-  Error_code status = Error_code::OK;
-  std::size_t number_of_faces = 0;
   std::size_t charts_after_vsa = 0;
   std::size_t charts_after_refinement = 0;
   /// charts after splitting those beyond the thresholds, before merging
   std::size_t charts_before_merging = 0;
-  std::size_t number_of_charts = 0;  ///< final
 
   Vsa_result vsa;
   Refinement_result refinement;  ///< empty when the step was switched off
   Denoising_result denoising;    ///< empty when the step was switched off
   Merging_result<TriangleMesh> merging;
 
-  /// per final chart, in chart id order: the LPFB+IP flattening of the chart cut open along `seam_edges`
-  std::vector<Chart_report> charts;
-  double max_area_distortion = 0;  ///< over the final charts, in percent
-  double max_l2_stretch = 0;       ///< over the final charts
-  double max_local_area_distortion = 0;  ///< A_loc over the final charts, in percent
-  std::size_t overlapping_charts = 0;
-  std::size_t rejected_charts = 0;  ///< final charts beyond the thresholds (0 unless merging was switched off)
-
-  /// the edges where the surface is cut: between two charts, or curves left inside a chart
-  std::vector<edge_descriptor> seam_edges;
-  double seam_length = 0;
-  /// the largest |l_1 - l_2| / max(l_1, l_2) over the seam curves, where l_1 and l_2 are the 2D lengths of
-  /// the curve's two sides in `corner_uv` (in two pieces, or twice in one piece for a cut inside a chart):
-  /// what a person sewing or gluing the pieces sees
-  double max_seam_length_mismatch = 0;
-  /// the length-weighted zigzag of the seam curves, `seam_zigzag()`: about 1 for curves a person can
-  /// follow with scissors, 1.2 to 1.4 for staircases along triangle edges
-  double seam_zigzag = 1;
-  /// the area-weighted mean compactness 4 pi A / P^2 of the charts, `chart_compactness()` (1 for a disc)
-  double compactness = 0;
-
-  /// the UV of every corner in its chart's flattening: `corner_uv[3 i + k]` is
-  /// the UV of the target of the k-th halfedge of the face of index i, starting
-  /// at `halfedge(f, tm)`. Each chart has its own frame, in the units of the mesh.
-  std::vector<std::array<double, 2>> corner_uv;
-  /// the point of every vertex (by vertex index) that the flattening used: the
-  /// denoised positions when the denoising ran, the input positions otherwise
-  std::vector<std::array<double, 3>> points;
-
-  double time_vsa_ms = 0, time_refine_ms = 0, time_denoise_ms = 0, time_merge_ms = 0, time_flatten_ms = 0,
-         time_total_ms = 0;
-
-  explicit operator bool() const { return status == Error_code::OK; }
+  // `points` (inherited): the denoised positions when the denoising ran, the input positions otherwise
+  double time_vsa_ms = 0, time_refine_ms = 0, time_denoise_ms = 0, time_merge_ms = 0, time_total_ms = 0;
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -218,147 +183,16 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
               << result.merging.merges << " merges in " << result.time_merge_ms << " ms\n";
 
   // 5. the flattening of every final chart
-  t = std::chrono::steady_clock::now();
-  if(progress) progress("flatten", 0.);
-  const std::size_t n = result.number_of_charts;
-  std::vector<std::vector<face_descriptor>> members(n);
-  for(face_descriptor f : faces(tm)) members[chart[get(fim, f)]].push_back(f);
-  for(auto& m : members)
-    std::sort(m.begin(), m.end(), [&](face_descriptor x, face_descriptor y) { return get(fim, x) < get(fim, y); });
-  result.charts.resize(n);
-  std::vector<std::vector<std::array<double, 2>>> uvs(n);
-  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t k) {
-    result.charts[k] = evaluator.evaluate(members[k], [&](halfedge_descriptor h) { return merger.is_seam(h); }, &uvs[k]);
-  });
-  result.corner_uv.assign(3 * nf, {0., 0.});
-  auto store = [&](std::size_t k) {
-    for(std::size_t i = 0; i < members[k].size() && !uvs[k].empty(); ++i)
-      for(int j = 0; j < 3; ++j) result.corner_uv[3 * get(fim, members[k][i]) + j] = uvs[k][3 * i + j];
-  };
-  for(std::size_t k = 0; k < n; ++k) store(k);
-  // the position of halfedge g in its face, and its 2D length in the face's chart
-  auto position = [&](halfedge_descriptor g) {
-    int k = 0;
-    for(halfedge_descriptor x = halfedge(face(g, tm), tm); x != g; x = next(x, tm)) ++k;
-    return k;
-  };
-  auto uv_length = [&](halfedge_descriptor g) {
-    const std::size_t i = get(fim, face(g, tm));
-    const int k = position(g);
-    // corner k of a face holds the UV of the target of its k-th halfedge
-    const std::array<double, 2>&p = result.corner_uv[3 * i + k], &q = result.corner_uv[3 * i + (k + 2) % 3];
-    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
-  };
-  if(thresholds.criterion != Chart_criterion::LPFB_IP) {
-    // the two sides of every seam edge get a common length: the mean of their
-    // lengths, or the length in a chart whose flattening cannot be fitted
-    // (kept as it is); a chart is fitted again when a neighbour is kept
-    std::vector<char> kept(n, 0), todo(n, 1);
-    const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
-    const std::vector<std::vector<halfedge_descriptor>> curves = merger.remaining_curves();
-    std::vector<double> factor(num_halfedges(tm), 1.);
-    for(int round = 0; round < 3; ++round) {
-      // each side of a curve is scaled along itself to the common length
-      for(const std::vector<halfedge_descriptor>& curve : curves) {
-        double side[2] = {0., 0.};
-        for(halfedge_descriptor h : curve) {
-          side[0] += uv_length(h);
-          side[1] += uv_length(opposite(h, tm));
-        }
-        const std::size_t a = chart[get(fim, face(curve.front(), tm))],
-                          b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
-        const double common = kept[a] ? side[0] : kept[b] ? side[1] : (side[0] + side[1]) / 2;
-        for(halfedge_descriptor h : curve) {
-          factor[get(him, h)] = side[0] > 0 ? common / side[0] : 1.;
-          factor[get(him, opposite(h, tm))] = side[1] > 0 ? common / side[1] : 1.;
-        }
-      }
-      std::vector<std::vector<double>> target(n);
-      std::vector<std::size_t> list;
-      for(std::size_t k = 0; k < n; ++k) {
-        if(!todo[k] || kept[k] || !result.charts[k].accepted) continue;
-        list.push_back(k);
-        target[k].resize(3 * members[k].size());
-        for(std::size_t i = 0; i < members[k].size(); ++i) {
-          int j = 0;
-          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(members[k][i], tm), tm))
-            target[k][3 * i + j++] = factor[get(him, g)] * uv_length(g);
-        }
-      }
-      std::vector<Chart_report> fitted(list.size());
-      std::vector<std::vector<std::array<double, 2>>> fitted_uv(list.size());
-      internal::for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t t) {
-        const std::size_t k = list[t];
-        fitted[t] = evaluator.evaluate(members[k], [&](halfedge_descriptor h) { return merger.is_seam(h); },
-                                       &fitted_uv[t], &target[k], &first_uvs[k]);
-      });
-      std::fill(todo.begin(), todo.end(), 0);
-      bool again = false;
-      for(std::size_t t = 0; t < list.size(); ++t) {
-        const std::size_t k = list[t];
-        if(fitted[t].accepted) {
-          result.charts[k] = fitted[t];
-          uvs[k].swap(fitted_uv[t]);
-          continue;
-        }
-        // kept with its own lengths: its neighbours fit to them
-        kept[k] = 1;
-        for(face_descriptor f : members[k])
-          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-            const halfedge_descriptor o = opposite(g, tm);
-            if(!is_border(o, tm) && merger.is_seam(g)) {
-              const std::size_t other = chart[get(fim, face(o, tm))];
-              if(other != k && !kept[other]) todo[other] = again = true;
-            }
-          }
-      }
-      for(std::size_t k : list) store(k);
-      if(!again) break;
-    }
-  }
-  for(std::size_t k = 0; k < n; ++k) {
-    const Chart_report& c = result.charts[k];
-    result.max_area_distortion = (std::max)(result.max_area_distortion, c.area_distortion);
-    result.max_l2_stretch = (std::max)(result.max_l2_stretch, c.l2_stretch);
-    result.max_local_area_distortion = (std::max)(result.max_local_area_distortion, c.local_area_distortion);
-    if(c.overlap) ++result.overlapping_charts;
-    if(!c.accepted) ++result.rejected_charts;
-  }
-  // the two sides of every seam curve in the flattenings
-  for(const std::vector<halfedge_descriptor>& curve : merger.remaining_curves()) {
-    double side[2] = {0., 0.};
-    for(halfedge_descriptor h : curve) {
-      side[0] += uv_length(h);
-      side[1] += uv_length(opposite(h, tm));
-    }
-    const double longer = (std::max)(side[0], side[1]);
-    if(longer > 0)
-      result.max_seam_length_mismatch = (std::max)(result.max_seam_length_mismatch, std::abs(side[0] - side[1]) / longer);
-  }
-  result.time_flatten_ms = internal::milliseconds_since(t);
+  internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, result.number_of_charts,
+                                                 result.seam_edges, thresholds, progress, result);
   if(verbose)
-    std::cerr << "flattening: " << n << " charts, max A " << result.max_area_distortion << " %, max L2 "
-              << result.max_l2_stretch << ", " << result.overlapping_charts << " overlapping, in "
+    std::cerr << "flattening: " << result.number_of_charts << " charts, max A " << result.max_area_distortion
+              << " %, max L2 " << result.max_l2_stretch << ", " << result.overlapping_charts << " overlapping, in "
               << result.time_flatten_ms << " ms\n";
 
   typedef typename boost::property_traits<FaceChartMap>::value_type Id;
   for(face_descriptor f : faces(tm)) put(face_chart, f, static_cast<Id>(chart[get(fim, f)]));
-  // how a person would cut the pieces: the zigzag of the seams, the compactness of the pieces
-  result.seam_zigzag = seam_zigzag(tm, result.seam_edges,
-                                   CGAL::parameters::vertex_point_map(vpm).vertex_index_map(vim).halfedge_index_map(him))
-                           .zigzag;
-  std::set<edge_descriptor> cuts;  // seams with the same chart on both sides
-  for(edge_descriptor e : result.seam_edges) {
-    const halfedge_descriptor h = halfedge(e, tm);
-    if(!is_border_edge(h, tm) && chart[get(fim, face(h, tm))] == chart[get(fim, face(opposite(h, tm), tm))])
-      cuts.insert(e);
-  }
-  result.compactness = chart_compactness(tm, chart_map,
-                                         CGAL::parameters::vertex_point_map(vpm).face_index_map(fim).edge_is_constrained_map(
-                                             CGAL::make_boolean_property_map(cuts)))
-                           .compactness;
   if(denoise) internal::write_points(tm, result.points, vim, get_parameter(np, internal_np::denoised_point_map_t()));
-  if(progress) progress("flatten", 1.);
   result.time_total_ms = internal::milliseconds_since(start);
   return result;
 }

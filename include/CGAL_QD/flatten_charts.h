@@ -1,0 +1,332 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_FLATTEN_CHARTS_H
+#define CGAL_QD_FLATTEN_CHARTS_H
+
+/// \file flatten_charts.h
+/// The last step of the segmentation on its own: every chart of a given
+/// segmentation cut open along its seams, flattened and measured, with the two
+/// sides of every seam given a common length where the charts allow it.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/chart_merging.h>
+#include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/segmentation_measures.h>
+#include <CGAL_QD/vsa_segmentation.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <set>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// the flattening of the charts of a segmentation, by `flatten_charts()` or as
+/// the last step of `segment_quasi_developable()`.
+template <class TriangleMesh>
+struct Chart_flattening_result
+{
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+
+  Error_code status = Error_code::OK;
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_charts = 0;  ///< final
+
+  /// per chart, in chart id order: its flattening cut open along `seam_edges`
+  std::vector<Chart_report> charts;
+  double max_area_distortion = 0;        ///< over the charts, in percent
+  double max_l2_stretch = 0;             ///< over the charts
+  double max_local_area_distortion = 0;  ///< A_loc over the charts, in percent
+  std::size_t overlapping_charts = 0;
+  std::size_t rejected_charts = 0;  ///< charts beyond the thresholds
+
+  /// the edges where the surface is cut: between two charts, or curves left inside a chart
+  std::vector<edge_descriptor> seam_edges;
+  double seam_length = 0;
+  /// the largest |l_1 - l_2| / max(l_1, l_2) over the seam curves (chains of seam edges between
+  /// junctions, or closed loops), where l_1 and l_2 are the 2D lengths of the curve's two sides in
+  /// `corner_uv` (in two pieces, or twice in one piece for a cut inside a chart): what a person sewing
+  /// or gluing the pieces sees
+  double max_seam_length_mismatch = 0;
+  /// the length-weighted zigzag of the seam curves, `seam_zigzag()`: about 1 for curves a person can
+  /// follow with scissors, 1.2 to 1.4 for staircases along triangle edges
+  double seam_zigzag = 1;
+  /// the area-weighted mean compactness 4 pi A / P^2 of the charts, `chart_compactness()` (1 for a disc)
+  double compactness = 0;
+
+  /// the UV of every corner in its chart's flattening: `corner_uv[3 i + k]` is
+  /// the UV of the target of the k-th halfedge of the face of index i, starting
+  /// at `halfedge(f, tm)`. Each chart has its own frame, in the units of the mesh.
+  std::vector<std::array<double, 2>> corner_uv;
+  /// the point of every vertex (by vertex index) that the flattening used
+  std::vector<std::array<double, 3>> points;
+
+  double time_flatten_ms = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+namespace internal {
+
+// Flattens the charts `chart` (compact ids by face index, n charts) cut open
+// along `seams`, and fills the chart and seam fields of `result` (whose
+// `points` hold the points by vertex index).
+template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
+void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, const VIM& vim, const HIM& him,
+                          const std::vector<std::size_t>& chart, std::size_t n,
+                          const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
+                          const Merge_thresholds& thresholds, const std::function<void(const char*, double)>& progress,
+                          Chart_flattening_result<TriangleMesh>& result)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  const auto t = std::chrono::steady_clock::now();
+  if(progress) progress("flatten", 0.);
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  result.number_of_faces = nf;
+  result.number_of_charts = n;
+  result.seam_edges = seams;
+  std::vector<char> is_seam(num_halfedges(tm), 0);
+  std::vector<halfedge_descriptor> seam_halfedges;
+  result.seam_length = 0;
+  for(edge_descriptor e : seams) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    is_seam[get(him, h)] = is_seam[get(him, opposite(h, tm))] = 1;
+    seam_halfedges.push_back(h);
+    const std::array<double, 3>&p = result.points[get(vim, source(h, tm))], &q = result.points[get(vim, target(h, tm))];
+    result.seam_length += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                    (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  const auto seam = [&](halfedge_descriptor h) { return is_seam[get(him, h)] != 0; };
+  // the seam curves, each as its halfedges along one side
+  std::vector<std::vector<halfedge_descriptor>> curves;
+  for(const auto& c : seam_curves(tm, seam_halfedges, vim, him, [](vertex_descriptor) { return false; })) {
+    std::vector<halfedge_descriptor> hs;
+    const std::size_t m = c.vertices.size(), ne = c.closed ? m : m - 1;
+    for(std::size_t i = 0; i < ne; ++i) {
+      const auto h = halfedge(c.vertices[i], c.vertices[(i + 1) % m], tm);
+      if(!h.second) continue;
+      // the side in a face: a seam edge is never a mesh border edge
+      hs.push_back(is_border(h.first, tm) ? opposite(h.first, tm) : h.first);
+    }
+    if(!hs.empty()) curves.push_back(hs);
+  }
+
+  Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, thresholds);
+  std::vector<std::vector<face_descriptor>> members(n);
+  for(face_descriptor f : faces(tm)) members[chart[get(fim, f)]].push_back(f);
+  for(auto& m : members)
+    std::sort(m.begin(), m.end(), [&](face_descriptor x, face_descriptor y) { return get(fim, x) < get(fim, y); });
+  result.charts.assign(n, Chart_report());
+  std::vector<std::vector<std::array<double, 2>>> uvs(n);
+  for_each_index<ConcurrencyTag>(n, [&](std::size_t k) {
+    if(!members[k].empty()) result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
+  });
+  result.corner_uv.assign(3 * nf, {0., 0.});
+  auto store = [&](std::size_t k) {
+    for(std::size_t i = 0; i < members[k].size() && !uvs[k].empty(); ++i)
+      for(int j = 0; j < 3; ++j) result.corner_uv[3 * get(fim, members[k][i]) + j] = uvs[k][3 * i + j];
+  };
+  for(std::size_t k = 0; k < n; ++k) store(k);
+  // the position of halfedge g in its face, and its 2D length in the face's chart
+  auto position = [&](halfedge_descriptor g) {
+    int k = 0;
+    for(halfedge_descriptor x = halfedge(face(g, tm), tm); x != g; x = next(x, tm)) ++k;
+    return k;
+  };
+  auto uv_length = [&](halfedge_descriptor g) {
+    const std::size_t i = get(fim, face(g, tm));
+    const int k = position(g);
+    // corner k of a face holds the UV of the target of its k-th halfedge
+    const std::array<double, 2>&p = result.corner_uv[3 * i + k], &q = result.corner_uv[3 * i + (k + 2) % 3];
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
+  };
+  if(thresholds.criterion != Chart_criterion::LPFB_IP) {
+    // the two sides of every seam edge get a common length: the mean of their
+    // lengths, or the length in a chart whose flattening cannot be fitted
+    // (kept as it is); a chart is fitted again when a neighbour is kept
+    std::vector<char> kept(n, 0), todo(n, 1);
+    const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
+    std::vector<double> factor(num_halfedges(tm), 1.);
+    for(int round = 0; round < 3; ++round) {
+      // each side of a curve is scaled along itself to the common length
+      for(const std::vector<halfedge_descriptor>& curve : curves) {
+        double side[2] = {0., 0.};
+        for(halfedge_descriptor h : curve) {
+          side[0] += uv_length(h);
+          side[1] += uv_length(opposite(h, tm));
+        }
+        const std::size_t a = chart[get(fim, face(curve.front(), tm))],
+                          b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
+        const double common = kept[a] ? side[0] : kept[b] ? side[1] : (side[0] + side[1]) / 2;
+        for(halfedge_descriptor h : curve) {
+          factor[get(him, h)] = side[0] > 0 ? common / side[0] : 1.;
+          factor[get(him, opposite(h, tm))] = side[1] > 0 ? common / side[1] : 1.;
+        }
+      }
+      std::vector<std::vector<double>> target(n);
+      std::vector<std::size_t> list;
+      for(std::size_t k = 0; k < n; ++k) {
+        if(!todo[k] || kept[k] || !result.charts[k].accepted) continue;
+        list.push_back(k);
+        target[k].resize(3 * members[k].size());
+        for(std::size_t i = 0; i < members[k].size(); ++i) {
+          int j = 0;
+          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(members[k][i], tm), tm))
+            target[k][3 * i + j++] = factor[get(him, g)] * uv_length(g);
+        }
+      }
+      std::vector<Chart_report> fitted(list.size());
+      std::vector<std::vector<std::array<double, 2>>> fitted_uv(list.size());
+      for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t i) {
+        const std::size_t k = list[i];
+        fitted[i] = evaluator.evaluate(members[k], seam, &fitted_uv[i], &target[k], &first_uvs[k]);
+      });
+      std::fill(todo.begin(), todo.end(), 0);
+      bool again = false;
+      for(std::size_t i = 0; i < list.size(); ++i) {
+        const std::size_t k = list[i];
+        if(fitted[i].accepted) {
+          result.charts[k] = fitted[i];
+          uvs[k].swap(fitted_uv[i]);
+          continue;
+        }
+        // kept with its own lengths: its neighbours fit to them
+        kept[k] = 1;
+        for(face_descriptor f : members[k])
+          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+            const halfedge_descriptor o = opposite(g, tm);
+            if(!is_border(o, tm) && seam(g)) {
+              const std::size_t other = chart[get(fim, face(o, tm))];
+              if(other != k && !kept[other]) todo[other] = again = true;
+            }
+          }
+      }
+      for(std::size_t k : list) store(k);
+      if(!again) break;
+    }
+  }
+  for(std::size_t k = 0; k < n; ++k) {
+    const Chart_report& c = result.charts[k];
+    result.max_area_distortion = (std::max)(result.max_area_distortion, c.area_distortion);
+    result.max_l2_stretch = (std::max)(result.max_l2_stretch, c.l2_stretch);
+    result.max_local_area_distortion = (std::max)(result.max_local_area_distortion, c.local_area_distortion);
+    if(c.overlap) ++result.overlapping_charts;
+    if(!c.accepted) ++result.rejected_charts;
+  }
+  // the two sides of every seam curve in the flattenings
+  for(const std::vector<halfedge_descriptor>& curve : curves) {
+    double side[2] = {0., 0.};
+    for(halfedge_descriptor h : curve) {
+      side[0] += uv_length(h);
+      side[1] += uv_length(opposite(h, tm));
+    }
+    const double longer = (std::max)(side[0], side[1]);
+    if(longer > 0)
+      result.max_seam_length_mismatch = (std::max)(result.max_seam_length_mismatch, std::abs(side[0] - side[1]) / longer);
+  }
+  // how a person would cut the pieces: the zigzag of the seams, the compactness of the pieces
+  result.seam_zigzag =
+      seam_zigzag(tm, seams, CGAL::parameters::vertex_point_map(vpm).vertex_index_map(vim).halfedge_index_map(him)).zigzag;
+  std::set<edge_descriptor> cuts;  // seams with the same chart on both sides
+  for(edge_descriptor e : seams) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    if(!is_border_edge(h, tm) && chart[get(fim, face(h, tm))] == chart[get(fim, face(opposite(h, tm), tm))])
+      cuts.insert(e);
+  }
+  const Indexed_face_writer<face_descriptor, FIM> chart_map{const_cast<std::vector<std::size_t>*>(&chart), fim};
+  result.compactness =
+      chart_compactness(tm, chart_map,
+                        CGAL::parameters::vertex_point_map(vpm).face_index_map(fim).edge_is_constrained_map(
+                            CGAL::make_boolean_property_map(cuts)))
+          .compactness;
+  result.time_flatten_ms = milliseconds_since(t);
+  if(progress) progress("flatten", 1.);
+}
+
+} // namespace internal
+
+/// \ingroup PkgCGAL_QDRef
+/// flattens every chart of a given segmentation, as the last step of
+/// `segment_quasi_developable()` does: each chart is cut open along the
+/// borders between charts and the constrained edges (cuts inside a chart),
+/// flattened by LPFB+IP and, with `Chart_criterion::LPFB_IP_THEN_ARAP`, by
+/// free-boundary ARAP where that is better, and measured against the
+/// thresholds; then the two sides of every seam curve get a common 2D length
+/// where both charts stay within the thresholds. Use it after changing a
+/// segmentation, e.g. after `smooth_chart_boundaries()`.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`; the result is the same
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam FaceChartMap a model of `ReadablePropertyMap` from faces to an integral chart id
+/// \param tm the triangle mesh
+/// \param face_chart the chart of every face; the ids need not be consecutive: chart k of the
+///        result is the k-th smallest id
+/// \param np optional named parameters: the thresholds and criterion of the segmentation
+///   (`CGAL_QD::parameters::max_area_distortion`, `max_l2_stretch`, `max_local_area_distortion`,
+///   `chart_criterion`, `overlap_tolerance`), `edge_is_constrained_map` (edges inside a chart that
+///   are cut too; default none), `callback`, and `vertex_point_map`, `vertex_index_map`,
+///   `face_index_map`, `halfedge_index_map`.
+/// \returns a `Chart_flattening_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`
+///          or `DEGENERATE_FACE` on invalid input.
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Chart_flattening_result<TriangleMesh> flatten_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,
+                                                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+
+  Chart_flattening_result<TriangleMesh> result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                                    CGAL::Static_boolean_property_map<edge_descriptor, false>());
+  const std::function<void(const char*, double)> progress =
+      choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
+  result.status = internal::validate_mesh_to_segment(tm, vpm);
+  if(result.status != Error_code::OK) return result;
+
+  std::vector<std::size_t> chart, ids;
+  const std::size_t n = internal::read_charts(tm, face_chart, fim, chart, ids);
+  std::vector<edge_descriptor> seams;
+  for(edge_descriptor e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    if(is_border_edge(h, tm)) continue;
+    if(get(ecm, e) || chart[get(fim, face(h, tm))] != chart[get(fim, face(opposite(h, tm), tm))]) seams.push_back(e);
+  }
+  result.points = internal::points_by_index(tm, vpm, vim);
+  internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams,
+                                                 internal::merge_thresholds_from<TriangleMesh>(np), progress, result);
+  return result;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_FLATTEN_CHARTS_H
