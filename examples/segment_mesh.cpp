@@ -95,12 +95,14 @@ struct Smoothing
   CGAL_QD::Boundary_smoothing_result result;
   std::size_t rejected_charts = 0;  // after smoothing, when it was not kept
   std::size_t curves = 0;           // the border curves of the segmentation
+  std::size_t input_faces = 0;      // the faces of the mesh before the smoothing refined it
 };
 
 template <class Result>
 void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report& input, const Smoothing& smoothing)
 {
-  out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": " << r.number_of_faces
+  out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": "
+      << (smoothing.kept ? smoothing.input_faces : r.number_of_faces)
             << ", \"repairs\": [";
   const std::vector<std::string> repairs = input.repairs();
   for(std::size_t k = 0; k < repairs.size(); ++k) out << (k ? ", " : "") << '"' << repairs[k] << '"';
@@ -130,6 +132,7 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
         << ", \"zigzag_before\": " << number(smoothing.result.zigzag_before)
         << ", \"zigzag_after\": " << number(smoothing.result.zigzag_after)
         << ", \"vertices_added\": " << smoothing.result.vertices_added
+        << ", \"faces_added\": " << (smoothing.kept ? r.number_of_faces - smoothing.input_faces : 0)
         << ", \"rejected_charts\": " << smoothing.rejected_charts
         << ", \"time_ms\": " << number(smoothing.result.time_ms) << "}";
   out << ", \"per_chart\": [";
@@ -261,6 +264,7 @@ int main(int argc, char** argv)
   Mesh smoothed;
   if(r && smooth_seams && r.number_of_charts > 1) {
     smoothing.requested = true;
+    smoothing.input_faces = r.number_of_faces;
     std::vector<char> frozen(r.number_of_charts, 0);  // charts whose borders stay along the edges
     for(int round = 0; round < 4 && !smoothing.kept; ++round) {
       smoothed = mesh;
@@ -336,7 +340,7 @@ int main(int argc, char** argv)
     std::cerr << "segment_mesh: " << CGAL_QD::error_message(r.status) << "\n";
     return EXIT_FAILURE;
   }
-  std::cout << path << ": " << r.number_of_faces << " faces\n"
+  std::cout << path << ": " << (smoothing.kept ? smoothing.input_faces : r.number_of_faces) << " faces\n"
             << repaired
             << "  VSA            " << r.charts_after_vsa << " charts, " << r.time_vsa_ms << " ms\n"
             << "  refinement     " << r.charts_after_refinement << " charts, " << r.time_refine_ms << " ms\n"
@@ -356,7 +360,8 @@ int main(int argc, char** argv)
             << (!smoothing.requested ? std::string("off")
                 : smoothing.kept
                     ? std::to_string(smoothing.result.curves_smoothed) + " of " +
-                          std::to_string(smoothing.curves) + " curves through the triangles, zigzag " +
+                          std::to_string(smoothing.curves) + " curves through the triangles (" +
+                          std::to_string(r.number_of_faces - smoothing.input_faces) + " faces added), zigzag " +
                           number(smoothing.result.zigzag_before) + " -> " + number(smoothing.result.zigzag_after)
                     : smoothing.result.curves_smoothed == 0
                         ? std::string("no curve could be smoothed; seams follow the triangle edges")
