@@ -24,6 +24,7 @@
 #include <CGAL/tags.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -253,9 +254,8 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     if(!is_border_edge(h, tm) && chart[get(fim, face(h, tm))] == chart[get(fim, face(opposite(h, tm), tm))])
       cuts.insert(e);
   }
-  const Indexed_face_writer<face_descriptor, FIM> chart_map{const_cast<std::vector<std::size_t>*>(&chart), fim};
   result.compactness =
-      chart_compactness(tm, chart_map,
+      chart_compactness(tm, boost::make_iterator_property_map(chart.cbegin(), fim),
                         CGAL::parameters::vertex_point_map(vpm).face_index_map(fim).edge_is_constrained_map(
                             CGAL::make_boolean_property_map(cuts)))
           .compactness;

@@ -174,8 +174,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   std::tie(result.merging.trials, result.merging.merges) =
       merger.template merge<ConcurrencyTag>(geo, progress, verbose, merge);
   result.number_of_charts = result.merging.number_of_charts = merger.number_of_final_charts();
-  result.seam_length = result.merging.seam_length = merger.seams(std::back_inserter(result.merging.seam_edges));
-  result.seam_edges = result.merging.seam_edges;
+  result.merging.seam_length = merger.seams(std::back_inserter(result.merging.seam_edges));
   result.merging.time_ms = result.time_merge_ms = internal::milliseconds_since(t);
   if(verbose)
     std::cerr << "merging: " << result.charts_before_merging << " charts (" << result.merging.charts_split
@@ -184,7 +183,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
 
   // 5. the flattening of every final chart
   internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, result.number_of_charts,
-                                                 result.seam_edges, thresholds, progress, result);
+                                                 result.merging.seam_edges, thresholds, progress, result);
   if(verbose)
     std::cerr << "flattening: " << result.number_of_charts << " charts, max A " << result.max_area_distortion
               << " %, max L2 " << result.max_l2_stretch << ", " << result.overlapping_charts << " overlapping, in "

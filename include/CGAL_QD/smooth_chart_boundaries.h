@@ -134,10 +134,7 @@ Boundary_smoothing_result smooth_chart_boundaries(TriangleMesh& tm, FaceChartMap
   const std::size_t rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 32);
   const double sharp = choose_parameter(get_parameter(np, CGAL::internal_np::sharpness_angle), 40.);
 
-  if(faces(tm).empty()) result.status = Error_code::EMPTY_MESH;
-  else if(!CGAL::is_triangle_mesh(tm)) result.status = Error_code::NOT_TRIANGLE_MESH;
-  else if(internal::has_non_finite_point<TriangleMesh>(vertices(tm), vpm)) result.status = Error_code::INVALID_COORDINATES;
-  else if(internal::has_degenerate_face(tm, faces(tm), vpm)) result.status = Error_code::DEGENERATE_FACE;
+  result.status = internal::validate_mesh_to_segment(tm, vpm);
   if(result.status != Error_code::OK) return result;
 
   const auto measure_np = CGAL::parameters::vertex_point_map(vpm);

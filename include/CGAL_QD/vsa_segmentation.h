@@ -68,7 +68,6 @@ struct Vsa_result
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
-
 namespace internal {
 
 // Step 1's scale, relative to the diagonal of the bounding box of the face
@@ -81,20 +80,6 @@ inline constexpr double vsa_min_chart_size = 0.07;
 // normals are not averaged across edges whose dihedral angle turns the
 // normal by more than 60 degrees (creases such as a cube's edges)
 inline constexpr double vsa_crease_cos = 0.5;
-
-// Checks for a mesh to segment: it may be closed, have borders, several
-// components or handles, but its faces must be proper triangles.
-template <class TriangleMesh, class VPM>
-Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
-{
-  typedef boost::graph_traits<TriangleMesh> GT;
-  if(faces(tm).empty()) return Error_code::EMPTY_MESH;
-  for(typename GT::face_descriptor f : faces(tm))
-    if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3) return Error_code::NOT_TRIANGLE_MESH;
-  if(has_non_finite_point<TriangleMesh>(vertices(tm), vpm)) return Error_code::INVALID_COORDINATES;
-  if(has_degenerate_face(tm, faces(tm), vpm)) return Error_code::DEGENERATE_FACE;
-  return Error_code::OK;
-}
 
 // Normalised L2,1 error of every chart, from per-face unit normals and areas.
 template <class TriangleMesh, class FIM, class ChartOf>

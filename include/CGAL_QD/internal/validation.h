@@ -95,6 +95,20 @@ bool has_degenerate_face(const TriangleMesh& tm, const FaceRange& fs, const VPM&
 
 // Gathers the patch of `start` (a face) and checks it. Writes `patch` and
 // returns OK, or the first problem found. `vim`/`fim` are initialised index maps.
+// Checks for a mesh to segment: it may be closed, have borders, several
+// components or handles, but its faces must be proper triangles.
+template <class TriangleMesh, class VPM>
+Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  if(faces(tm).empty()) return Error_code::EMPTY_MESH;
+  for(typename GT::face_descriptor f : faces(tm))
+    if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3) return Error_code::NOT_TRIANGLE_MESH;
+  if(has_non_finite_point<TriangleMesh>(vertices(tm), vpm)) return Error_code::INVALID_COORDINATES;
+  if(has_degenerate_face(tm, faces(tm), vpm)) return Error_code::DEGENERATE_FACE;
+  return Error_code::OK;
+}
+
 template <class TriangleMesh, class VPM, class VIM, class FIM>
 Error_code collect_and_validate_patch(const TriangleMesh& tm,
                                       typename boost::graph_traits<TriangleMesh>::face_descriptor start,
