@@ -19,7 +19,9 @@
 // then replaced by smooth curves through the triangles
 // (CGAL_QD::smooth_chart_boundaries()), the charts flattened again
 // (CGAL_QD::flatten_charts()), and the smoothed mesh is kept if every chart is
-// still within the thresholds (--no-smooth-seams keeps the edge seams).
+// still within the thresholds; the curves around a chart that is not, or whose
+// seams no longer have matching sides where they had, go back to the edges
+// (--no-smooth-seams keeps the edge seams).
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
@@ -50,6 +52,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <set>
 #include <string>
 
 #include <unistd.h>
@@ -96,6 +99,7 @@ struct Smoothing
   std::size_t rejected_charts = 0;  // after smoothing, when it was not kept
   std::size_t curves = 0;           // the border curves of the segmentation
   std::size_t input_faces = 0;      // the faces of the mesh before the smoothing refined it
+  double time_ms = 0;               // every round: smoothing and flattening
 };
 
 template <class Result>
@@ -116,6 +120,7 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
             << ", \"max_l2_stretch\": " << number(r.max_l2_stretch)
             << ", \"max_local_area_distortion_pct\": " << number(r.max_local_area_distortion)
             << ", \"max_seam_length_mismatch\": " << number(r.max_seam_length_mismatch)
+            << ", \"seam_curves\": " << r.number_of_seam_curves << ", \"seam_curves_matched\": " << r.seam_curves_matched
             << ", \"seam_zigzag\": " << number(r.seam_zigzag) << ", \"compactness\": " << number(r.compactness)
             << ", \"overlapping_charts\": " << r.overlapping_charts << ", \"rejected_charts\": " << r.rejected_charts
             << ", \"seam_length\": " << number(r.seam_length) << ", \"time_vsa_ms\": " << number(r.time_vsa_ms)
@@ -134,7 +139,7 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
         << ", \"vertices_added\": " << smoothing.result.vertices_added
         << ", \"faces_added\": " << (smoothing.kept ? r.number_of_faces - smoothing.input_faces : 0)
         << ", \"rejected_charts\": " << smoothing.rejected_charts
-        << ", \"time_ms\": " << number(smoothing.result.time_ms) << "}";
+        << ", \"time_ms\": " << number(smoothing.time_ms) << "}";
   out << ", \"per_chart\": [";
   for(std::size_t k = 0; k < r.charts.size(); ++k) {
     const CGAL_QD::Chart_report& c = r.charts[k];
@@ -147,6 +152,7 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
               << ", \"max_border_length_error\": " << number(c.max_border_length_error)
               << ", \"flattening\": \"" << (c.optimized ? "ARAP" : "LPFB+IP") << '"'
               << ", \"seam_lengths_matched\": " << (c.lengths_matched ? "true" : "false")
+              << ", \"seams_matched\": " << (c.seams_matched ? "true" : "false")
               << ", \"overlap\": " << (c.overlap ? "true" : "false")
               << "}";
   }
@@ -259,47 +265,77 @@ int main(int argc, char** argv)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
   // smooth seams through the triangles, on a copy of the mesh kept only if
   // every chart still flattens within the thresholds; the curves around a
-  // chart that does not are left along the edges, and the others tried again
+  // chart that does not, or whose seams no longer match in length where they
+  // did, are left along the edges, and the others tried again
   Smoothing smoothing;
   Mesh smoothed;
   if(r && smooth_seams && r.number_of_charts > 1) {
     smoothing.requested = true;
     smoothing.input_faces = r.number_of_faces;
     std::vector<char> frozen(r.number_of_charts, 0);  // charts whose borders stay along the edges
-    for(int round = 0; round < 4 && !smoothing.kept; ++round) {
-      smoothed = mesh;
-      auto smoothed_chart = smoothed.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
-      auto keep = smoothed.add_property_map<Mesh::Edge_index, bool>("e:keep", false).first;
+    std::set<std::pair<std::size_t, std::size_t>> frozen_pairs;  // borders between two charts that stay
+    const std::set<std::pair<std::size_t, std::size_t>> unmatched_before(r.unmatched_seams.begin(), r.unmatched_seams.end());
+    CGAL_QD::Chart_flattening_result<Mesh> best;     // the last smoothing with every chart accepted
+    double time_ms = 0;
+    for(int round = 0; round < 4; ++round) {
+      Mesh trial = mesh;
+      auto trial_chart = trial.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
+      auto keep = trial.add_property_map<Mesh::Edge_index, bool>("e:keep", false).first;
       for(Mesh::Edge_index e : r.seam_edges) {
-        const Mesh::Halfedge_index h = smoothed.halfedge(e);
-        const std::size_t a = get(smoothed_chart, smoothed.face(h)), b = get(smoothed_chart, smoothed.face(smoothed.opposite(h)));
-        if(a == b || frozen[a] || frozen[b]) put(keep, e, true);
+        const Mesh::Halfedge_index h = trial.halfedge(e);
+        const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
+        if(a == b || frozen[a] || frozen[b] || frozen_pairs.count({(std::min)(a, b), (std::max)(a, b)}))
+          put(keep, e, true);
       }
-      smoothing.result =
-          CGAL_QD::smooth_chart_boundaries(smoothed, smoothed_chart, CGAL::parameters::edge_is_constrained_map(keep));
-      if(round == 0) smoothing.curves = smoothing.result.number_of_curves;
-      if(!smoothing.result || smoothing.result.curves_smoothed == 0) break;
+      const CGAL_QD::Boundary_smoothing_result sr =
+          CGAL_QD::smooth_chart_boundaries(trial, trial_chart, CGAL::parameters::edge_is_constrained_map(keep));
+      time_ms += sr.time_ms;
+      if(round == 0) {
+        smoothing.curves = sr.number_of_curves;
+        smoothing.result = sr;
+      }
+      if(!sr || sr.curves_smoothed == 0) break;
       // the cuts inside charts are kept, and so are the halves of a cut edge
       // that the smoothing split: with the kept borders, they are the seams
       const auto fnp = QP::max_local_area_distortion(
           max_local, QP::chart_criterion(criterion, QP::max_area_distortion(max_area, QP::max_l2_stretch(
                                                         max_stretch, CGAL::parameters::edge_is_constrained_map(keep)))));
-      const CGAL_QD::Chart_flattening_result<Mesh> f =
-          sequential ? CGAL_QD::flatten_charts<CGAL::Sequential_tag>(smoothed, smoothed_chart, fnp)
-                     : CGAL_QD::flatten_charts<CGAL::Parallel_if_available_tag>(smoothed, smoothed_chart, fnp);
-      smoothing.rejected_charts = f.rejected_charts;
+      CGAL_QD::Chart_flattening_result<Mesh> f =
+          sequential ? CGAL_QD::flatten_charts<CGAL::Sequential_tag>(trial, trial_chart, fnp)
+                     : CGAL_QD::flatten_charts<CGAL::Parallel_if_available_tag>(trial, trial_chart, fnp);
+      time_ms += f.time_flatten_ms;
       if(!f || f.number_of_charts != r.number_of_charts) break;
+      if(!smoothing.kept) smoothing.rejected_charts = f.rejected_charts;
+      bool done = true;
+      for(std::size_t k = 0; k < f.charts.size(); ++k)
+        if(!f.charts[k].accepted) {
+          frozen[k] = 1;
+          done = false;
+        }
+      // a seam whose sides no longer match goes back to the edges (all the
+      // borders of the chart, for a cut inside a chart, which stays anyway)
+      for(const auto& pair : f.unmatched_seams) {
+        if(unmatched_before.count(pair)) continue;
+        if(pair.first == pair.second ? !frozen[pair.first] : !frozen_pairs.count(pair)) done = false;
+        if(pair.first == pair.second)
+          frozen[pair.first] = 1;
+        else
+          frozen_pairs.insert(pair);
+      }
       if(f.rejected_charts == 0) {
         smoothing.kept = true;
-        const double total = r.time_total_ms + smoothing.result.time_ms + f.time_flatten_ms;
-        static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = f;
-        r.time_total_ms = total;
-      } else {
-        for(std::size_t k = 0; k < f.charts.size(); ++k)
-          if(!f.charts[k].accepted) frozen[k] = 1;
+        smoothing.result = sr;
+        smoothed = std::move(trial);
+        best = std::move(f);
       }
+      if(done) break;
     }
-    if(!smoothing.kept) smoothed = Mesh();
+    smoothing.time_ms = time_ms;
+    if(smoothing.kept) {
+      const double total = r.time_total_ms + time_ms;
+      static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = best;
+      r.time_total_ms = total;
+    }
   }
   const Mesh& out_mesh = smoothing.kept ? smoothed : mesh;
   const auto out_chart = out_mesh.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
@@ -353,8 +389,9 @@ int main(int argc, char** argv)
             << "  max L2         " << r.max_l2_stretch << "\n"
             << "  max A_loc      " << r.max_local_area_distortion << " %\n"
             << "  overlapping    " << r.overlapping_charts << " charts\n"
-            << "  seam length    " << r.seam_length << ", zigzag " << r.seam_zigzag << ", sides differ by at most "
-            << 100 * r.max_seam_length_mismatch << " %\n"
+            << "  seam length    " << r.seam_length << ", zigzag " << r.seam_zigzag << ", sides within 0.5 % on "
+            << r.seam_curves_matched << " of " << r.number_of_seam_curves << " curves, at most "
+            << 100 * r.max_seam_length_mismatch << " % apart\n"
             << "  compactness    " << r.compactness << "\n"
             << "  smooth seams   "
             << (!smoothing.requested ? std::string("off")

@@ -12,17 +12,17 @@ for name in ${MESHES:-fandisk bunny00 cow camel elephant mannequin-devil armadil
   "$program" "$meshes/$name.off" --json "$@" | sed "s/^{/{\"mesh\": \"$name\", /"
 done | python3 -c '
 import json, sys
-print("| mesh | faces | VSA | after splitting | final | max A(Ω) % | max L² | max A_loc % | overlapping | seam length | seam mismatch % | zigzag Z | compactness | curves smoothed | trials | VSA s | refine s | merge s | flatten s | total s |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+print("| mesh | faces | VSA | after splitting | final | max A(Ω) % | max L² | max A_loc % | overlapping | seam length | seam mismatch % | seams matched | zigzag Z | compactness | curves smoothed | trials | VSA s | refine s | merge s | flatten s | total s |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 for line in sys.stdin:
     d = json.loads(line)
     s = lambda k: "%.2f" % (d[k] / 1000)
     sm = d.get("seam_smoothing")
     smoothed = "off" if sm is None else ("%d of %d" % (sm["curves_smoothed"], sm["curves"]) if sm["kept"] else "0 (%d charts failed)" % sm["rejected_charts"])
-    print("| %s | %d | %d | %d | **%d** | %.2f | %.3f | %.2f | %d | %.4g | %.1f | %.3f | %.3f | %s | %d | %s | %s | %s | %s | %s |" % (
+    print("| %s | %d | %d | %d | **%d** | %.2f | %.3f | %.2f | %d | %.4g | %.1f | %s | %.3f | %.3f | %s | %d | %s | %s | %s | %s | %s |" % (
         d["mesh"], d["faces"], d["charts_after_vsa"], d["charts_before_merging"], d["charts"],
         d["max_area_distortion_pct"], d["max_l2_stretch"], d["max_local_area_distortion_pct"],
-        d["overlapping_charts"], d["seam_length"], 100 * d["max_seam_length_mismatch"], d["seam_zigzag"],
+        d["overlapping_charts"], d["seam_length"], 100 * d["max_seam_length_mismatch"], "%d of %d" % (d["seam_curves_matched"], d["seam_curves"]), d["seam_zigzag"],
         d["compactness"], smoothed, d["merge_trials"], s("time_vsa_ms"), s("time_refine_ms"), s("time_merge_ms"), s("time_flatten_ms"),
         s("time_total_ms")))
 '

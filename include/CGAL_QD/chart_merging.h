@@ -59,8 +59,12 @@ enum class Chart_criterion
   /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
   /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
   /// the final flattening). The final flattening of every chart then gives the two sides of every seam
-  /// curve a common length (the mean of their lengths in the free maps) and pulls each chart's border to
-  /// those lengths (`Arap_border::KEEP_LENGTHS`), where the chart stays within the thresholds.
+  /// curve a common length (the mean of their lengths in the free maps) and gives every border edge its
+  /// share of it exactly (`Arap_border::LENGTH_PRESERVED`) where the chart stays within the thresholds,
+  /// or else pulls the border towards those lengths (`Arap_border::KEEP_LENGTHS`). The splitting and the
+  /// merging of `segment_quasi_developable()` accept a chart only 5 % below `max_local_area_distortion`,
+  /// which leaves room for this fit and for the seam smoothing; the final charts are measured against the
+  /// bound itself.
   LPFB_IP_THEN_ARAP
 };
 
@@ -82,11 +86,15 @@ struct Chart_report
   bool overlap = false;                    ///< S(Omega): a flipped face, a branch vertex or a border crossing
   /// whether the flattening is the optimised one (`Chart_criterion::LPFB_IP_THEN_ARAP`), not LPFB+IP
   bool optimized = false;
-  /// whether the border edges have the lengths common to the two sides of each seam (the final
-  /// flattening with `Chart_criterion::LPFB_IP_THEN_ARAP`); LPFB+IP gives them their 3D lengths
+  /// whether every border edge has exactly (up to the border solver's tolerance) its share of the
+  /// length common to the two sides of its seam (the final flattening with
+  /// `Chart_criterion::LPFB_IP_THEN_ARAP`); LPFB+IP gives them their 3D lengths
   bool lengths_matched = false;
   /// whether the chart is within the thresholds: status `OK`, A(Omega) and L2 at most the thresholds, no overlap
   bool accepted = false;
+  /// whether every seam curve along the chart has its two sides within 0.5 % of each other in the
+  /// final flattening (`Chart_flattening_result::seam_curves_matched`); true for a chart without seams
+  bool seams_matched = true;
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -212,9 +220,8 @@ public:
       }
     };
     if(border_target) {
-      // the chart's flattening `start_uv` with its border edges pulled to the
-      // given lengths, with a weight that makes them hold to a fraction of a
-      // percent: the seams of the pieces match
+      // the chart's flattening `start_uv` with its border edges given the
+      // target lengths: the seams of the pieces match
       for(std::size_t c = 0; c < 3 * faces.size(); ++c)
         put(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])),
             K::Point_2((*start_uv)[c][0], (*start_uv)[c][1]));
@@ -232,12 +239,28 @@ public:
           while(g != h && h < g) g = next(g, sm);
           if(g == h) ++rep.number_of_border_loops;
         }
+      // first every border edge at exactly its target length (the border
+      // angles of the flattening kept as closely as the closure allows, the
+      // interior fitted again); where that leaves the thresholds, the border
+      // pulled towards the targets
+      auto exact = sm.template add_property_map<V, K::Point_2>("v:exact", K::Point_2(0, 0)).first;
+      for(auto v : vertices(sm)) put(exact, v, get(uv, v));
+      const Optimization_result e = optimize_flattening(
+          sm, exact,
+          parameters::arap_border(Arap_border::LENGTH_PRESERVED, parameters::border_edge_length_map(goal)));
+      Chart_report exact_rep = rep;
+      if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
+        exact_rep.optimized = exact_rep.lengths_matched = true;
+        for(auto v : vertices(sm)) put(uv, v, get(exact, v));
+        write_corner_uv();
+        return exact_rep;
+      }
       const Optimization_result o = optimize_flattening(
           sm, uv,
           parameters::arap_border(Arap_border::KEEP_LENGTHS,
                                   parameters::border_edge_length_map(goal, parameters::border_length_weight(1000.))));
       if(o && measure(sm, uv, rep)) {
-        rep.optimized = rep.lengths_matched = true;
+        rep.optimized = true;
         write_corner_uv();
       } else {
         rep.accepted = false;  // the caller keeps its earlier flattening

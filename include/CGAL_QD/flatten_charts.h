@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace CGAL_QD {
@@ -64,6 +65,12 @@ struct Chart_flattening_result
   /// `corner_uv` (in two pieces, or twice in one piece for a cut inside a chart): what a person sewing
   /// or gluing the pieces sees
   double max_seam_length_mismatch = 0;
+  std::size_t number_of_seam_curves = 0;  ///< the seam curves of `max_seam_length_mismatch`
+  /// the seam curves whose two sides differ by at most 0.5 % of the longer one
+  std::size_t seam_curves_matched = 0;
+  /// the two charts of every seam curve whose sides differ by more than 0.5 % (the smaller id first;
+  /// the same chart twice for a cut inside a chart)
+  std::vector<std::pair<std::size_t, std::size_t>> unmatched_seams;
   /// the length-weighted zigzag of the seam curves, `seam_zigzag()`: about 1 for curves a person can
   /// follow with scissors, 1.2 to 1.4 for staircases along triangle edges
   double seam_zigzag = 1;
@@ -242,8 +249,17 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
       side[1] += uv_length(opposite(h, tm));
     }
     const double longer = (std::max)(side[0], side[1]);
-    if(longer > 0)
-      result.max_seam_length_mismatch = (std::max)(result.max_seam_length_mismatch, std::abs(side[0] - side[1]) / longer);
+    const double mismatch = longer > 0 ? std::abs(side[0] - side[1]) / longer : 0.;
+    result.max_seam_length_mismatch = (std::max)(result.max_seam_length_mismatch, mismatch);
+    ++result.number_of_seam_curves;
+    if(mismatch <= 0.005) {
+      ++result.seam_curves_matched;
+    } else {
+      const std::size_t a = chart[get(fim, face(curve.front(), tm))],
+                        b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
+      result.charts[a].seams_matched = result.charts[b].seams_matched = false;
+      result.unmatched_seams.push_back({(std::min)(a, b), (std::max)(a, b)});
+    }
   }
   // how a person would cut the pieces: the zigzag of the seams, the compactness of the pieces
   result.seam_zigzag =

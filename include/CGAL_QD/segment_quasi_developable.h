@@ -15,6 +15,7 @@
 #include <CGAL_QD/boundary_refinement.h>
 #include <CGAL_QD/chart_merging.h>
 #include <CGAL_QD/flatten_charts.h>
+#include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/vsa_segmentation.h>
@@ -160,7 +161,12 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   auto t = std::chrono::steady_clock::now();
   const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
   const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
-  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, thresholds);
+  // the splitting and the merging keep every chart a little below the A_loc
+  // bound: the final flattening then has room to give the two sides of every
+  // seam the same length, and the seam smoothing room to move the borders
+  internal::Merge_thresholds trial_thresholds = thresholds;
+  trial_thresholds.max_local_area_distortion *= 1. - internal::local_area_distortion_margin;
+  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, trial_thresholds);
   internal::Boundary_merger<TriangleMesh, FIM, HIM, VIM> merger(tm, fim, him, evaluator, chart,
                                                                 result.charts_after_refinement, result.points, vim);
   result.merging.charts_before = result.charts_after_refinement;

@@ -9,6 +9,11 @@ namespace internal {
 
 inline constexpr double pi = 3.14159265358979323846;
 
+// the fraction of the local area distortion bound that the segmentation's
+// splitting and merging leave free for the final flattening (seam lengths
+// matched, seams smoothed); the final charts are measured against the bound
+inline constexpr double local_area_distortion_margin = 0.05;
+
 } // namespace internal
 } // namespace CGAL_QD
 
