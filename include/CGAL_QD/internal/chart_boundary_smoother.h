@@ -8,6 +8,8 @@
 // triangles of a band around it; used by `smooth_chart_boundaries()`.
 
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/labelled_triangles.h>
+#include <CGAL_QD/internal/vec3.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL/Kernel_traits.h>
@@ -154,36 +156,10 @@ private:
   {
     const halfedge_descriptor h = halfedge(f, m_tm);
     const P a = point(source(h, m_tm)), b = point(target(h, m_tm)), c = point(target(next(h, m_tm), m_tm));
-    P n = cross(sub(b, a), sub(c, a));
-    const double l = norm(n);
+    P n = vec3::cross(vec3::sub(b, a), vec3::sub(c, a));
+    const double l = vec3::norm(n);
     if(l > 0) for(double& x : n) x /= l;
     return n;
-  }
-
-  static P sub(const P& a, const P& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-  static P cross(const P& u, const P& w)
-  {
-    return {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-  }
-  static double dot(const P& u, const P& w) { return u[0] * w[0] + u[1] * w[1] + u[2] * w[2]; }
-  static double norm(const P& u) { return std::sqrt(dot(u, u)); }
-
-  // distance from p to the segment [a, b], and the parameter of the nearest point
-  static double segment_distance(const P& p, const P& a, const P& b, double& t)
-  {
-    const P d = sub(b, a);
-    const double dd = dot(d, d);
-    t = dd > 0 ? (std::max)(0., (std::min)(1., dot(sub(p, a), d) / dd)) : 0.;
-    const P q = {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
-    return norm(sub(p, q));
-  }
-
-  static double polyline_distance(const P& p, const std::vector<P>& line, bool closed)
-  {
-    double best = line.empty() ? 0. : norm(sub(p, line[0])), t;
-    const std::size_t n = line.size(), ne = closed ? n : n - 1;
-    for(std::size_t i = 0; i < ne; ++i) best = (std::min)(best, segment_distance(p, line[i], line[(i + 1) % n], t));
-    return best;
   }
 
   // ------------------------------------------------- the two charts, as ids
@@ -198,11 +174,7 @@ private:
     int curve_index = -1;  // index in the curve, or -1
     double phi = 0, raw = 0;
   };
-  struct Tri
-  {
-    std::array<std::size_t, 3> n;
-    int label;  // 0: A, 1: B
-  };
+  typedef Labelled_triangle Tri;  // label 0: A, 1: B
 
   std::size_t node_of(vertex_descriptor v)
   {
@@ -313,10 +285,10 @@ private:
         if(is_border(h, m_tm) || !m_face_id.count(face(h, m_tm))) continue;
         const halfedge_descriptor g = halfedge(face(h, m_tm), m_tm);
         const P a = point(source(g, m_tm)), b = point(target(g, m_tm)), c = point(target(next(g, m_tm), m_tm));
-        const P n = cross(sub(b, a), sub(c, a));
+        const P n = vec3::cross(vec3::sub(b, a), vec3::sub(c, a));
         for(int k = 0; k < 3; ++k) normals[i][k] += n[k];
       }
-      const double l = norm(normals[i]);
+      const double l = vec3::norm(normals[i]);
       if(l > 0) for(double& x : normals[i]) x /= l;
     }
     for(Node& n : m_nodes) {
@@ -330,7 +302,7 @@ private:
       std::size_t best_i = 0;
       for(std::size_t i = 0; i < ne; ++i) {
         double t;
-        const double d = segment_distance(n.p, m_target[i], m_target[(i + 1) % nv], t);
+        const double d = vec3::segment_distance(n.p, m_target[i], m_target[(i + 1) % nv], t);
         if(best < 0 || d < best) {
           best = d;
           best_t = t;
@@ -344,25 +316,25 @@ private:
       else if(j < nv && (m_closed || (j > 0 && j + 1 < nv))) {
         // nearest to a corner of the smoothed curve: the side of the bisector of its two frames
         const std::size_t i0 = (j + nv - 1) % nv, i1 = (j + 1) % nv;
-        P s0 = cross(normals[j], sub(m_target[j], m_target[i0])), s1 = cross(normals[j], sub(m_target[i1], m_target[j]));
-        const double l0 = norm(s0), l1 = norm(s1);
+        P s0 = vec3::cross(normals[j], vec3::sub(m_target[j], m_target[i0])), s1 = vec3::cross(normals[j], vec3::sub(m_target[i1], m_target[j]));
+        const double l0 = vec3::norm(s0), l1 = vec3::norm(s1);
         P s = {0., 0., 0.};
         for(int k = 0; k < 3; ++k) s[k] = (l0 > 0 ? s0[k] / l0 : 0.) + (l1 > 0 ? s1[k] / l1 : 0.);
-        const double ls = norm(s);
-        phi = ls > 0 ? dot(sub(n.p, m_target[j]), s) / ls : 0.;
+        const double ls = vec3::norm(s);
+        phi = ls > 0 ? vec3::dot(vec3::sub(n.p, m_target[j]), s) / ls : 0.;
         if(std::abs(phi) < best) phi = phi < 0 ? -best : best;
         if(n.side != 0 && (m_kept[i0] || m_kept[j % ne])) phi = n.side * best;
       }
       else {
         const P& a = m_target[best_i];
         const P& b = m_target[(best_i + 1) % nv];
-        const P d = sub(b, a);
+        const P d = vec3::sub(b, a);
         P nm;
         for(int k = 0; k < 3; ++k) nm[k] = (1 - best_t) * normals[best_i][k] + best_t * normals[(best_i + 1) % nv][k];
-        const P s = cross(nm, d);
-        const double ls = norm(s);
+        const P s = vec3::cross(nm, d);
+        const double ls = vec3::norm(s);
         const P q = {a[0] + best_t * d[0], a[1] + best_t * d[1], a[2] + best_t * d[2]};
-        phi = ls > 0 ? dot(sub(n.p, q), s) / ls : 0.;
+        phi = ls > 0 ? vec3::dot(vec3::sub(n.p, q), s) / ls : 0.;
         // beside a kept (sharp or constrained) edge, the faces keep their chart
         if(m_kept[best_i] && n.side != 0) phi = n.side * best;
       }
@@ -433,11 +405,7 @@ private:
   }
 
   // ------------------------------------------------------------------ plan
-  static std::uint64_t key(std::size_t a, std::size_t b)
-  {
-    if(a > b) std::swap(a, b);
-    return (std::uint64_t(a) << 32) | std::uint64_t(b);
-  }
+  static std::uint64_t key(std::size_t a, std::size_t b) { return edge_key(a, b); }
 
   double phi_of(std::size_t x) const { return x < m_nodes.size() ? m_nodes[x].phi : 0.; }
   const P& position(std::size_t x) const { return x < m_nodes.size() ? m_nodes[x].p : m_new_points[x - m_nodes.size()]; }
@@ -468,9 +436,9 @@ private:
   double quality(std::size_t a, std::size_t b, std::size_t c) const
   {
     const P &pa = position(a), &pb = position(b), &pc = position(c);
-    const double l = (std::max)({dot(sub(pa, pb), sub(pa, pb)), dot(sub(pb, pc), sub(pb, pc)),
-                                 dot(sub(pc, pa), sub(pc, pa))});
-    return l > 0 ? norm(cross(sub(pb, pa), sub(pc, pa))) / l : 0.;
+    const double l = (std::max)({vec3::dot(vec3::sub(pa, pb), vec3::sub(pa, pb)), vec3::dot(vec3::sub(pb, pc), vec3::sub(pb, pc)),
+                                 vec3::dot(vec3::sub(pc, pa), vec3::sub(pc, pa))});
+    return l > 0 ? vec3::norm(vec3::cross(vec3::sub(pb, pa), vec3::sub(pc, pa))) / l : 0.;
   }
 
   struct Face_plan
@@ -564,88 +532,12 @@ private:
   }
 
   // ---------------------------------------------------------------- checks
-  struct Topology
-  {
-    std::size_t faces = 0, components = 0, border_loops = 0, pinches = 0;
-    long euler = 0;
-    bool operator==(const Topology& o) const
-    {
-      return faces > 0 && o.faces > 0 && components == o.components && border_loops == o.border_loops &&
-             pinches == o.pinches && euler == o.euler;
-    }
-  };
-
-  static Topology topology(const std::vector<Tri>& tris, int label, std::size_t number_of_nodes)
-  {
-    Topology t;
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> edge_tris;
-    std::vector<char> used(number_of_nodes, 0);
-    std::size_t vertices = 0;
-    for(std::size_t i = 0; i < tris.size(); ++i) {
-      if(tris[i].label != label) continue;
-      ++t.faces;
-      for(int k = 0; k < 3; ++k) {
-        edge_tris[key(tris[i].n[k], tris[i].n[(k + 1) % 3])].push_back(i);
-        if(!used[tris[i].n[k]]) {
-          used[tris[i].n[k]] = 1;
-          ++vertices;
-        }
-      }
-    }
-    t.euler = long(vertices) - long(edge_tris.size()) + long(t.faces);
-    // components of the faces through edges
-    std::unordered_map<std::size_t, std::size_t> parent;
-    std::function<std::size_t(std::size_t)> find = [&](std::size_t x) {
-      while(parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
-    for(std::size_t i = 0; i < tris.size(); ++i)
-      if(tris[i].label == label) parent[i] = i;
-    std::unordered_map<std::size_t, std::size_t> border_parent, border_degree;
-    std::function<std::size_t(std::size_t)> border_find = [&](std::size_t x) {
-      while(border_parent[x] != x) x = border_parent[x] = border_parent[border_parent[x]];
-      return x;
-    };
-    for(const auto& e : edge_tris) {
-      if(e.second.size() >= 2) {
-        for(std::size_t k = 1; k < e.second.size(); ++k) parent[find(e.second[k])] = find(e.second[0]);
-        continue;
-      }
-      const std::size_t a = std::size_t(e.first >> 32), b = std::size_t(e.first & 0xffffffffu);
-      for(std::size_t x : {a, b})
-        if(border_parent.emplace(x, x).second) border_degree[x] = 0;
-      ++border_degree[a];
-      ++border_degree[b];
-      border_parent[border_find(a)] = border_find(b);
-    }
-    for(const auto& p : parent)
-      if(find(p.first) == p.first) ++t.components;
-    for(const auto& p : border_parent)
-      if(border_find(p.first) == p.first) ++t.border_loops;
-    for(const auto& d : border_degree)
-      if(d.second > 2) ++t.pinches;
-    return t;
-  }
-
-  // the border edges between A and B at node x
-  static std::size_t border_edges_at(const std::vector<Tri>& tris, std::size_t x)
-  {
-    std::map<std::size_t, int> mask;  // other node -> labels seen
-    for(const Tri& t : tris)
-      for(int k = 0; k < 3; ++k)
-        if(t.n[k] == x)
-          for(int j = 1; j < 3; ++j) mask[t.n[(k + j) % 3]] |= (1 << t.label);
-    std::size_t count = 0;
-    for(const auto& m : mask)
-      if(m.second == 3) ++count;
-    return count;
-  }
-
   bool verify()
   {
     const std::size_t total = m_nodes.size() + m_new_points.size();
     for(int label = 0; label < 2; ++label) {
-      const Topology before = topology(m_tris, label, total), after = topology(m_after, label, total);
+      const Labelled_topology before = labelled_topology(m_tris, label, total),
+                              after = labelled_topology(m_after, label, total);
       if(!(before == after) || after.components != 1) return false;
     }
     if(!m_closed) {
@@ -679,11 +571,11 @@ private:
       if(m.second == 3) segments.push_back({position(std::size_t(m.first >> 32)), position(std::size_t(m.first & 0xffffffffu))});
     double move = 0;
     for(const auto& s : segments)
-      for(const P& p : {s.first, s.second}) move = (std::max)(move, polyline_distance(p, m_original, m_closed));
+      for(const P& p : {s.first, s.second}) move = (std::max)(move, vec3::polyline_distance(p, m_original, m_closed));
     for(const P& p : m_original) {
       double best = -1, t;
       for(const auto& s : segments) {
-        const double d = segment_distance(p, s.first, s.second, t);
+        const double d = vec3::segment_distance(p, s.first, s.second, t);
         if(best < 0 || d < best) best = d;
       }
       move = (std::max)(move, (std::max)(best, 0.));
