@@ -9,8 +9,11 @@
 #include "resolution_series.h"
 #include "test_utils.h"
 
+#include <CGAL_QD/distortion.h>
 #include <CGAL_QD/extract_chart.h>
 #include <CGAL_QD/flatten_charts.h>
+#include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 #include <CGAL_QD/smooth_chart_boundaries.h>
@@ -1228,6 +1231,33 @@ BOOST_AUTO_TEST_CASE(flatten_charts_gives_both_sides_of_a_seam_the_same_length)
   BOOST_TEST(worst_edge < 0.05);
   // the free boundary gives the seam a length of its own, near the 3D one
   BOOST_TEST(std::abs(side[0] - length3) <= 0.05 * length3);
+}
+
+BOOST_AUTO_TEST_CASE(flatten_charts_starts_the_optimisation_again_where_lpfb_ip_folds)
+{
+  // a chart whose LPFB+IP folds so that the optimisation started from it
+  // stays outside the thresholds; started again (from LSCM), it is accepted
+  Surface_mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_TEST_DATA_DIR) + "/camel_chart_folded_start.off", tm));
+  BOOST_REQUIRE(num_faces(tm) == 712u);
+  auto uv = tm.add_property_map<Surface_mesh::Vertex_index, Epick::Point_2>("v:uv").first;
+  BOOST_REQUIRE(QD::flatten_patch(tm, uv));
+  BOOST_REQUIRE(QD::optimize_flattening(tm, uv, QD::parameters::arap_border(QD::Arap_border::FREE,
+                                                                          CGAL::parameters::number_of_iterations(100))));
+  const auto first = QD::compute_distortion(tm, uv, QD::parameters::overlap_tolerance(1e-9));
+  BOOST_REQUIRE(first);
+  BOOST_TEST((first.overlap || first.local_area_distortion > 2.5));
+  Face_map<Surface_mesh> chart;
+  for(auto f : faces(tm)) chart[f] = 0;
+  const QD::Chart_flattening_result<Surface_mesh> f = QD::flatten_charts(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(f);
+  BOOST_TEST(f.rejected_charts == 0u);
+  BOOST_TEST(f.charts[0].accepted);
+  BOOST_TEST(f.charts[0].optimized);
+  BOOST_TEST(!f.charts[0].overlap);
+  BOOST_TEST(f.charts[0].local_area_distortion <= 2.5);
+  BOOST_TEST(f.charts[0].area_distortion <= 10.);
+  BOOST_TEST(f.charts[0].l2_stretch <= 2.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

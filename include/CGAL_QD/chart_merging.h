@@ -21,6 +21,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -58,7 +60,8 @@ enum class Chart_criterion
   /// accepted when A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch`, A_loc <=
   /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
   /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
-  /// the final flattening). The final flattening of every chart then gives the two sides of every seam
+  /// the final flattening, started again from LPFB+IP and from LSCM for at most 300 where that is still not
+  /// accepted). The final flattening of every chart then gives the two sides of every seam
   /// curve a common length (the mean of their lengths in the free maps) and gives every border edge its
   /// share of it exactly (`Arap_border::LENGTH_PRESERVED`) where the chart stays within the thresholds,
   /// or else pulls the border towards those lengths (`Arap_border::KEEP_LENGTHS`). The splitting and the
@@ -275,33 +278,53 @@ public:
     }
     if(!measure(sm, uv, rep)) return rep;
     const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
+    // an optimised flattening `map` replaces the flattening of `rep` when it is
+    // accepted and that one is not, or when both are and it has less local
+    // area distortion
+    auto better = [&](const auto& map, const Optimization_result& r) {
+      Chart_report candidate = rep;
+      if(!r || !measure(sm, map, candidate) || !candidate.accepted ||
+         (rep.accepted && !(candidate.local_area_distortion < rep.local_area_distortion)))
+        return false;
+      candidate.optimized = true;
+      rep = candidate;
+      return true;
+    };
     if(!paper && (!rep.accepted || corner_uv)) {
-      // free-boundary ARAP started from LPFB+IP; kept when it is accepted and
-      // LPFB+IP is not, or when both are and it has less local area distortion
+      // free-boundary ARAP started from LPFB+IP
       auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
       for(auto v : vertices(sm)) put(opt, v, get(uv, v));
       const Optimization_result o = optimize_flattening(sm, opt, trial_parameters());
-      Chart_report better = rep;
-      if(o && measure(sm, opt, better) && better.accepted &&
-         (!rep.accepted || better.local_area_distortion < rep.local_area_distortion)) {
-        better.optimized = true;
-        rep = better;
-        uv = opt;
-      }
+      if(better(opt, o)) uv = opt;
       // a trial stops after 30 iterations; a final flattening goes on until it
       // converges (at most 70 more), kept if it is still accepted and better
       if(corner_uv && o && o.iterations == 30) {
         // on a copy: `uv` may now be the same map as `opt`
         auto more = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:more", K::Point_2(0, 0)).first;
         for(auto v : vertices(sm)) put(more, v, get(opt, v));
-        Chart_report longer = rep;
-        const Optimization_result r = optimize_flattening(sm, more, trial_parameters().number_of_iterations(70));
-        if(r && measure(sm, more, longer) && longer.accepted &&
-           (!rep.accepted || longer.local_area_distortion < rep.local_area_distortion)) {
-          longer.optimized = true;
-          rep = longer;
-          uv = more;
+        if(better(more, optimize_flattening(sm, more, trial_parameters().number_of_iterations(70)))) uv = more;
+      }
+    }
+    if(!paper && corner_uv && !rep.accepted) {
+      // a final flattening still outside the thresholds: the optimisation
+      // started again, from LPFB+IP and, for a chart with one border loop,
+      // from LSCM, each until it converges (at most 300 iterations)
+      auto again = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:again", K::Point_2(0, 0)).first;
+      for(int start = 0; start < 2; ++start) {
+        if(start == 0) {
+          for(auto v : vertices(sm)) put(again, v, get(uv, v));  // `uv` holds LPFB+IP here
+        } else {
+          typename Mesh::Halfedge_index border;
+          for(auto h : halfedges(sm))
+            if(is_border(h, sm)) border = h;
+          if(rep.number_of_border_loops != 1 || border == Mesh::null_halfedge() ||
+             CGAL::Surface_mesh_parameterization::parameterize(
+                 sm, CGAL::Surface_mesh_parameterization::LSCM_parameterizer_3<Mesh>(), border, again) !=
+                 CGAL::Surface_mesh_parameterization::OK)
+            break;
         }
+        if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(300))))
+          for(auto v : vertices(sm)) put(uv, v, get(again, v));  // a copy: `again` is used again
       }
     }
     write_corner_uv();
