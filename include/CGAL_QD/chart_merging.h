@@ -60,8 +60,8 @@ enum class Chart_criterion
   /// accepted when A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch`, A_loc <=
   /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
   /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
-  /// the final flattening, started again from LPFB+IP and from LSCM for at most 300 where that is still not
-  /// accepted). The final flattening of every chart then gives the two sides of every seam
+  /// the final flattening, continued up to 300 and started again from LSCM for at most 300 where that is
+  /// still not accepted). The final flattening of every chart then gives the two sides of every seam
   /// curve a common length (the mean of their lengths in the free maps) and gives every border edge its
   /// share of it exactly (`Arap_border::LENGTH_PRESERVED`) where the chart stays within the thresholds,
   /// or else pulls the border towards those lengths (`Arap_border::KEEP_LENGTHS`). The splitting and the
@@ -290,11 +290,15 @@ public:
       rep = candidate;
       return true;
     };
+    auto last = uv;       // the latest optimisation started from LPFB+IP
+    bool capped = false;  // whether it stopped at its iteration cap
     if(!paper && (!rep.accepted || corner_uv)) {
       // free-boundary ARAP started from LPFB+IP
       auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
       for(auto v : vertices(sm)) put(opt, v, get(uv, v));
       const Optimization_result o = optimize_flattening(sm, opt, trial_parameters());
+      last = opt;
+      capped = o && o.iterations == 30;
       if(better(opt, o)) uv = opt;
       // a trial stops after 30 iterations; a final flattening goes on until it
       // converges (at most 70 more), kept if it is still accepted and better
@@ -302,28 +306,38 @@ public:
         // on a copy: `uv` may now be the same map as `opt`
         auto more = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:more", K::Point_2(0, 0)).first;
         for(auto v : vertices(sm)) put(more, v, get(opt, v));
-        if(better(more, optimize_flattening(sm, more, trial_parameters().number_of_iterations(70)))) uv = more;
+        const Optimization_result r = optimize_flattening(sm, more, trial_parameters().number_of_iterations(70));
+        last = more;
+        capped = r && r.iterations == 70;
+        if(better(more, r)) uv = more;
       }
     }
     if(!paper && corner_uv && !rep.accepted) {
       // a final flattening still outside the thresholds: the optimisation
-      // started again, from LPFB+IP and, for a chart with one border loop,
-      // from LSCM, each until it converges (at most 300 iterations)
+      // from LPFB+IP goes on where it stopped at its cap (at most 300
+      // iterations in all), and, for a chart with one border loop, one is
+      // started from LSCM (at most 300 iterations)
       auto again = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:again", K::Point_2(0, 0)).first;
       for(int start = 0; start < 2; ++start) {
+        std::size_t iterations = 300;
         if(start == 0) {
-          for(auto v : vertices(sm)) put(again, v, get(uv, v));  // `uv` holds LPFB+IP here
+          if(!capped) continue;  // it converged: going on would give the same map
+          for(auto v : vertices(sm)) put(again, v, get(last, v));
+          iterations = 200;
         } else {
           typename Mesh::Halfedge_index border;
           for(auto h : halfedges(sm))
-            if(is_border(h, sm)) border = h;
+            if(is_border(h, sm)) {
+              border = h;
+              break;
+            }
           if(rep.number_of_border_loops != 1 || border == Mesh::null_halfedge() ||
              CGAL::Surface_mesh_parameterization::parameterize(
                  sm, CGAL::Surface_mesh_parameterization::LSCM_parameterizer_3<Mesh>(), border, again) !=
                  CGAL::Surface_mesh_parameterization::OK)
             break;
         }
-        if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(300))))
+        if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(iterations))))
           for(auto v : vertices(sm)) put(uv, v, get(again, v));  // a copy: `again` is used again
       }
     }
