@@ -20,8 +20,8 @@
 // (CGAL_QD::smooth_chart_boundaries()), the charts flattened again
 // (CGAL_QD::flatten_charts()), and the smoothed mesh is kept if every chart is
 // still within the thresholds; the curves around a chart that is not, or whose
-// seams no longer have matching sides where they had, go back to the edges
-// (--no-smooth-seams keeps the edge seams).
+// seams no longer have matching sides where they had, are smoothed less at the
+// next try, then left along the edges (--no-smooth-seams keeps the edge seams).
 //
 // usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
 //                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
@@ -43,6 +43,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -51,6 +53,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <set>
 #include <string>
@@ -264,31 +267,91 @@ int main(int argc, char** argv)
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
   // smooth seams through the triangles, on a copy of the mesh kept only if
-  // every chart still flattens within the thresholds; the curves around a
-  // chart that does not, or whose seams no longer match in length where they
-  // did, are left along the edges, and the others tried again
+  // every chart still flattens within the thresholds. Every border between
+  // two charts starts with the full smoothing (32 rounds); the borders around
+  // a chart that leaves the thresholds, or between two charts whose seams no
+  // longer match in length where they did, are smoothed less (8 rounds, then
+  // 2: the staircase goes, the course of the border stays), then left along
+  // the edges, and the smoothing is tried again
   Smoothing smoothing;
   Mesh smoothed;
   if(r && smooth_seams && r.number_of_charts > 1) {
     smoothing.requested = true;
     smoothing.input_faces = r.number_of_faces;
-    std::vector<char> frozen(r.number_of_charts, 0);  // charts whose borders stay along the edges
-    std::set<std::pair<std::size_t, std::size_t>> frozen_pairs;  // borders between two charts that stay
-    const std::set<std::pair<std::size_t, std::size_t>> unmatched_before(r.unmatched_seams.begin(), r.unmatched_seams.end());
-    CGAL_QD::Chart_flattening_result<Mesh> best;     // the last smoothing with every chart accepted
+    typedef std::pair<std::size_t, std::size_t> Chart_pair;
+    const std::array<std::size_t, 3> strengths = {32, 8, 2};  // smoothing rounds; level 3: along the edges
+    std::map<Chart_pair, std::size_t> level;                   // of every border between two charts
+    std::vector<std::vector<Chart_pair>> pairs_of(r.number_of_charts);
+    for(Mesh::Edge_index e : r.seam_edges) {
+      const Mesh::Halfedge_index h = mesh.halfedge(e);
+      const std::size_t a = get(chart, mesh.face(h)), b = get(chart, mesh.face(mesh.opposite(h)));
+      const Chart_pair p((std::min)(a, b), (std::max)(a, b));
+      if(a != b && level.emplace(p, 0).second) {
+        pairs_of[a].push_back(p);
+        pairs_of[b].push_back(p);
+      }
+    }
+    auto smooth_less = [&](const Chart_pair& p) {
+      std::size_t& l = level[p];
+      if(l == strengths.size()) return false;
+      ++l;
+      return true;
+    };
+    std::map<Chart_pair, double> mismatch_before;  // of the seams whose sides did not match
+    for(std::size_t i = 0; i < r.unmatched_seams.size(); ++i) {
+      double& m = mismatch_before[r.unmatched_seams[i]];
+      m = (std::max)(m, r.unmatched_seam_mismatch[i]);
+    }
+    CGAL_QD::Chart_flattening_result<Mesh> best;  // the last smoothing with every chart accepted
     double time_ms = 0;
-    for(int round = 0; round < 4; ++round) {
+    for(int round = 0; round < 8; ++round) {
       Mesh trial = mesh;
       auto trial_chart = trial.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
       auto keep = trial.add_property_map<Mesh::Edge_index, bool>("e:keep", false).first;
+      // the edges that stay in every call: cuts inside charts, borders along the edges
+      auto stays = trial.add_property_map<Mesh::Edge_index, bool>("e:stays", false).first;
       for(Mesh::Edge_index e : r.seam_edges) {
         const Mesh::Halfedge_index h = trial.halfedge(e);
         const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
-        if(a == b || frozen[a] || frozen[b] || frozen_pairs.count({(std::min)(a, b), (std::max)(a, b)}))
-          put(keep, e, true);
+        if(a == b || level[Chart_pair((std::min)(a, b), (std::max)(a, b))] == strengths.size()) put(stays, e, true);
       }
-      const CGAL_QD::Boundary_smoothing_result sr =
-          CGAL_QD::smooth_chart_boundaries(trial, trial_chart, CGAL::parameters::edge_is_constrained_map(keep));
+      CGAL_QD::Boundary_smoothing_result sr;
+      bool called = false;
+      for(std::size_t l = 0; l < strengths.size(); ++l) {
+        if(std::none_of(level.begin(), level.end(), [&](const auto& p) { return p.second == l; })) continue;
+        // this call smooths the borders at level l, every other one stays
+        for(Mesh::Edge_index e : trial.edges()) {
+          const Mesh::Halfedge_index h = trial.halfedge(e);
+          if(trial.is_border(e)) continue;
+          const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
+          put(keep, e, get(stays, e) || (a != b && level[Chart_pair((std::min)(a, b), (std::max)(a, b))] != l));
+        }
+        const CGAL_QD::Boundary_smoothing_result s = CGAL_QD::smooth_chart_boundaries(
+            trial, trial_chart, CGAL::parameters::edge_is_constrained_map(keep).number_of_iterations(strengths[l]));
+        // the halves of a cut edge that the smoothing split stay cuts
+        for(Mesh::Edge_index e : trial.edges())
+          if(get(keep, e) && !trial.is_border(e) &&
+             get(trial_chart, trial.face(trial.halfedge(e))) ==
+                 get(trial_chart, trial.face(trial.opposite(trial.halfedge(e)))))
+            put(stays, e, true);
+        if(!called) {
+          sr = s;
+          called = true;
+        }
+        else {
+          sr.status = s.status;
+          sr.curves_smoothed += s.curves_smoothed;
+          sr.curves_failed += s.curves_failed;
+          sr.vertices_added += s.vertices_added;
+          sr.faces_added += s.faces_added;
+          sr.zigzag_after = s.zigzag_after;
+          sr.max_border_move = (std::max)(sr.max_border_move, s.max_border_move);
+          sr.max_relative_border_move = (std::max)(sr.max_relative_border_move, s.max_relative_border_move);
+          sr.time_ms += s.time_ms;
+        }
+        if(!s) break;
+      }
+      if(!called) break;
       time_ms += sr.time_ms;
       if(round == 0) {
         smoothing.curves = sr.number_of_curves;
@@ -306,21 +369,21 @@ int main(int argc, char** argv)
       time_ms += f.time_flatten_ms;
       if(!f || f.number_of_charts != r.number_of_charts) break;
       if(!smoothing.kept) smoothing.rejected_charts = f.rejected_charts;
-      bool done = true;
+      bool changed = false;
       for(std::size_t k = 0; k < f.charts.size(); ++k)
-        if(!f.charts[k].accepted) {
-          frozen[k] = 1;
-          done = false;
-        }
-      // a seam whose sides no longer match goes back to the edges (all the
-      // borders of the chart, for a cut inside a chart, which stays anyway)
-      for(const auto& pair : f.unmatched_seams) {
-        if(unmatched_before.count(pair)) continue;
-        if(pair.first == pair.second ? !frozen[pair.first] : !frozen_pairs.count(pair)) done = false;
-        if(pair.first == pair.second)
-          frozen[pair.first] = 1;
+        if(!f.charts[k].accepted)
+          for(const Chart_pair& p : pairs_of[k]) changed = smooth_less(p) || changed;
+      // a seam whose sides no longer match, or differ by more than the worst
+      // seam did before the smoothing, is smoothed less (all the borders of
+      // the chart, for a cut inside a chart)
+      for(std::size_t i = 0; i < f.unmatched_seams.size(); ++i) {
+        const Chart_pair& pair = f.unmatched_seams[i];
+        const auto before = mismatch_before.find(pair);
+        if(before != mismatch_before.end() && f.unmatched_seam_mismatch[i] <= r.max_seam_length_mismatch) continue;
+        if(pair.first != pair.second)
+          changed = smooth_less(pair) || changed;
         else
-          frozen_pairs.insert(pair);
+          for(const Chart_pair& p : pairs_of[pair.first]) changed = smooth_less(p) || changed;
       }
       if(f.rejected_charts == 0) {
         smoothing.kept = true;
@@ -328,7 +391,7 @@ int main(int argc, char** argv)
         smoothed = std::move(trial);
         best = std::move(f);
       }
-      if(done) break;
+      if(!changed) break;
     }
     smoothing.time_ms = time_ms;
     if(smoothing.kept) {

@@ -333,6 +333,15 @@ void expect_valid_segmentation(const Mesh& tm, const Chart_map<Mesh>& chart,
   BOOST_TEST(worst < 1e-7);
   // every border edge at exactly its share of its seam's common length: the sides agree
   if(all_matched) BOOST_TEST(r.max_seam_length_mismatch <= 1e-6);
+  // every curve that does not match, with how far apart its sides are
+  BOOST_TEST(r.number_of_seam_curves - r.seam_curves_matched == r.unmatched_seams.size());
+  BOOST_TEST(r.unmatched_seam_mismatch.size() == r.unmatched_seams.size());
+  double worst_mismatch = 0;
+  for(double m : r.unmatched_seam_mismatch) {
+    BOOST_TEST(m > 0.005);
+    worst_mismatch = (std::max)(worst_mismatch, m);
+  }
+  if(!r.unmatched_seams.empty()) BOOST_TEST(worst_mismatch == r.max_seam_length_mismatch);
   BOOST_TEST(r.seam_zigzag >= 1.);
   BOOST_TEST(r.compactness > 0.);
   BOOST_TEST(r.compactness <= 1.5);
@@ -1176,6 +1185,7 @@ BOOST_AUTO_TEST_CASE(flatten_charts_repeats_the_segmentation_s_last_step)
   BOOST_TEST(f.number_of_seam_curves == s.number_of_seam_curves);
   BOOST_TEST(f.seam_curves_matched == s.seam_curves_matched);
   BOOST_TEST(f.number_of_seam_curves - f.seam_curves_matched == f.unmatched_seams.size());
+  BOOST_TEST(f.unmatched_seam_mismatch.size() == s.unmatched_seam_mismatch.size());
   BOOST_TEST(f.compactness == s.compactness, tt::tolerance(1e-12));
 }
 

@@ -71,6 +71,8 @@ struct Chart_flattening_result
   /// the two charts of every seam curve whose sides differ by more than 0.5 % (the smaller id first;
   /// the same chart twice for a cut inside a chart)
   std::vector<std::pair<std::size_t, std::size_t>> unmatched_seams;
+  /// the relative difference |l_1 - l_2| / max(l_1, l_2) of each curve of `unmatched_seams`, in the same order
+  std::vector<double> unmatched_seam_mismatch;
   /// the length-weighted zigzag of the seam curves, `seam_zigzag()`: about 1 for curves a person can
   /// follow with scissors, 1.2 to 1.4 for staircases along triangle edges
   double seam_zigzag = 1;
@@ -259,6 +261,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
                         b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
       result.charts[a].seams_matched = result.charts[b].seams_matched = false;
       result.unmatched_seams.push_back({(std::min)(a, b), (std::max)(a, b)});
+      result.unmatched_seam_mismatch.push_back(mismatch);
     }
   }
   // how a person would cut the pieces: the zigzag of the seams, the compactness of the pieces
