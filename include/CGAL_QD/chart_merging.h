@@ -830,18 +830,20 @@ std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const
 
 /// \ingroup PkgCGAL_QDRef
 /// merges charts by removing the boundary curves between them (paper Section
-/// \param tm the triangle mesh
-/// \param face_chart the chart id of every face
 /// 4.2). A boundary curve is a maximal chain of edges between the same two
 /// charts. First, every chart that does not itself pass the test below is
 /// split in two (by distance to two far-apart faces) until all pass. Then the
-/// curves enter a max-heap keyed by the area of the charts on either side; the
-/// top curve is tried: the chart obtained by removing it, cut open along all
-/// other remaining curves inside it (dangling cuts are allowed), is flattened
-/// by LPFB+IP (`flatten_patch()`, virtual cutting for holes). The removal is
-/// accepted iff the flattening succeeds, A(Omega) <= `max_area_distortion`,
-/// L2 <= `max_l2_stretch` and there is no overlap. A trial that would create a
-/// handle, or a chart that is not a disk with holes after cutting, fails and
+/// curves enter a heap ordered by `merge_order`; the top curve is tried: the
+/// chart obtained by removing it, cut open along all other remaining curves
+/// inside it (dangling cuts are allowed), is flattened by LPFB+IP
+/// (`flatten_patch()`, virtual cutting for holes). With the paper's criterion
+/// (`Chart_criterion::LPFB_IP`) the removal is accepted iff the flattening
+/// succeeds, A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch` and
+/// there is no overlap. With the default `Chart_criterion::LPFB_IP_THEN_ARAP`,
+/// the flattening must also keep A_loc <= `max_local_area_distortion`, and a
+/// chart that LPFB+IP does not pass is flattened again by a free-boundary ARAP
+/// started from LPFB+IP (`optimize_flattening()`), judged the same way. A
+/// trial that would create a handle, or a chart that is not a disk with holes after cutting, fails and
 /// is rejected. After an acceptance, every remaining curve of the merged chart
 /// takes its new key (curves rejected before are tried again, since the chart
 /// changed). Ties are broken by curve order, so the result is deterministic.
@@ -853,11 +855,18 @@ std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
 /// \tparam FaceChartMap a model of `ReadWritePropertyMap` from faces to an integral chart id; it receives
 ///         ids in `[0, n)`
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
 /// \param np optional named parameters:
 ///   - `CGAL_QD::parameters::max_area_distortion` (default 0.10), `CGAL_QD::parameters::max_l2_stretch` (default 2.0)
 ///   - `CGAL_QD::parameters::overlap_tolerance`: see `compute_distortion()` (default 1e-9: the sides of a
 ///     cut that develop onto each other touch, they do not overlap)
-///   - `CGAL_QD::parameters::merge_order`: a `Merge_order` (default `LARGEST_AREA_FIRST`, the paper's)
+///   - `CGAL_QD::parameters::max_local_area_distortion` (default 0.025), `CGAL_QD::parameters::chart_criterion`
+///     (default `Chart_criterion::LPFB_IP_THEN_ARAP`), and for its ARAP flattening
+///     `CGAL_QD::parameters::arap_border` (default `Arap_border::FREE`) and
+///     `CGAL_QD::parameters::border_length_weight` (see `optimize_flattening()`)
+///   - `CGAL_QD::parameters::merge_order`: a `Merge_order` (default `SMALLEST_AREA_FIRST`; the paper's is
+///     `LARGEST_AREA_FIRST`)
 ///   - `callback`: called with (step name, fraction done) during the run
 ///   - `verbose`: print every trial to `std::cerr` (default `false`)
 ///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
