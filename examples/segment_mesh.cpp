@@ -279,13 +279,14 @@ int main(int argc, char** argv)
     smoothing.requested = true;
     smoothing.input_faces = r.number_of_faces;
     typedef std::pair<std::size_t, std::size_t> Chart_pair;
+    auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
     const std::array<std::size_t, 3> strengths = {32, 8, 2};  // smoothing rounds; level 3: along the edges
     std::map<Chart_pair, std::size_t> level;                   // of every border between two charts
     std::vector<std::vector<Chart_pair>> pairs_of(r.number_of_charts);
     for(Mesh::Edge_index e : r.seam_edges) {
       const Mesh::Halfedge_index h = mesh.halfedge(e);
       const std::size_t a = get(chart, mesh.face(h)), b = get(chart, mesh.face(mesh.opposite(h)));
-      const Chart_pair p((std::min)(a, b), (std::max)(a, b));
+      const Chart_pair p = pair_of(a, b);
       if(a != b && level.emplace(p, 0).second) {
         pairs_of[a].push_back(p);
         pairs_of[b].push_back(p);
@@ -297,11 +298,7 @@ int main(int argc, char** argv)
       ++l;
       return true;
     };
-    std::map<Chart_pair, double> mismatch_before;  // of the seams whose sides did not match
-    for(std::size_t i = 0; i < r.unmatched_seams.size(); ++i) {
-      double& m = mismatch_before[r.unmatched_seams[i]];
-      m = (std::max)(m, r.unmatched_seam_mismatch[i]);
-    }
+    const std::set<Chart_pair> unmatched_before(r.unmatched_seams.begin(), r.unmatched_seams.end());
     CGAL_QD::Chart_flattening_result<Mesh> best;  // the last smoothing with every chart accepted
     double time_ms = 0;
     for(int round = 0; round < 8; ++round) {
@@ -313,7 +310,7 @@ int main(int argc, char** argv)
       for(Mesh::Edge_index e : r.seam_edges) {
         const Mesh::Halfedge_index h = trial.halfedge(e);
         const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
-        if(a == b || level[Chart_pair((std::min)(a, b), (std::max)(a, b))] == strengths.size()) put(stays, e, true);
+        if(a == b || level[pair_of(a, b)] == strengths.size()) put(stays, e, true);
       }
       CGAL_QD::Boundary_smoothing_result sr;
       bool called = false;
@@ -324,7 +321,7 @@ int main(int argc, char** argv)
           const Mesh::Halfedge_index h = trial.halfedge(e);
           if(trial.is_border(e)) continue;
           const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
-          put(keep, e, get(stays, e) || (a != b && level[Chart_pair((std::min)(a, b), (std::max)(a, b))] != l));
+          put(keep, e, get(stays, e) || (a != b && level[pair_of(a, b)] != l));
         }
         const CGAL_QD::Boundary_smoothing_result s = CGAL_QD::smooth_chart_boundaries(
             trial, trial_chart, CGAL::parameters::edge_is_constrained_map(keep).number_of_iterations(strengths[l]));
@@ -378,8 +375,7 @@ int main(int argc, char** argv)
       // the chart, for a cut inside a chart)
       for(std::size_t i = 0; i < f.unmatched_seams.size(); ++i) {
         const Chart_pair& pair = f.unmatched_seams[i];
-        const auto before = mismatch_before.find(pair);
-        if(before != mismatch_before.end() && f.unmatched_seam_mismatch[i] <= r.max_seam_length_mismatch) continue;
+        if(unmatched_before.count(pair) && f.unmatched_seam_mismatch[i] <= r.max_seam_length_mismatch) continue;
         if(pair.first != pair.second)
           changed = smooth_less(pair) || changed;
         else
