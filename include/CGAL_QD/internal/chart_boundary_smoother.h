@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
+#include <boost/container_hash/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <algorithm>
 #include <array>
@@ -26,8 +27,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
-#include <map>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -131,6 +130,7 @@ public:
     m_mean_edge = polyline_length(m_original, closed) / double(ne);
 
     build_charts();
+    for(int label = 0; label < 2; ++label) m_before[label] = labelled_topology(m_tris, label, m_nodes.size());
     for(std::size_t rounds = m_rounds; rounds >= 2; rounds /= 2) {
       if(!compute_phi(rounds)) continue;
       remove_islands();
@@ -536,9 +536,8 @@ private:
   {
     const std::size_t total = m_nodes.size() + m_new_points.size();
     for(int label = 0; label < 2; ++label) {
-      const Labelled_topology before = labelled_topology(m_tris, label, total),
-                              after = labelled_topology(m_after, label, total);
-      if(!(before == after) || after.components != 1) return false;
+      const Labelled_topology after = labelled_topology(m_after, label, total);
+      if(!(m_before[label] == after) || after.components != 1) return false;
     }
     if(!m_closed) {
       std::vector<Tri> near_before, near_after;
@@ -657,10 +656,11 @@ private:
   double m_mean_edge = 0;
 
   std::vector<Node> m_nodes;
-  std::map<vertex_descriptor, std::size_t> m_node_id;
+  std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor>> m_node_id;
   std::vector<face_descriptor> m_faces;
-  std::map<face_descriptor, std::size_t> m_face_id;
+  std::unordered_map<face_descriptor, std::size_t, boost::hash<face_descriptor>> m_face_id;
   std::vector<Tri> m_tris, m_after, m_new_tris;
+  std::array<Labelled_topology, 2> m_before;  // of A and B, before the change
   std::vector<char> m_in_band;
   std::unordered_map<std::uint64_t, std::size_t> m_split_node;
   std::vector<std::pair<std::size_t, std::size_t>> m_split_edges;  // (plus, minus) nodes

@@ -8,13 +8,12 @@
 // topology of the triangles of one label: what the seam smoothing compares
 // before and after a planned cut, without touching the mesh.
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <map>
-#include <unordered_map>
 #include <utility>
-#include <array>
 #include <vector>
 
 namespace CGAL_QD {
@@ -52,52 +51,55 @@ inline Labelled_topology labelled_topology(const std::vector<Labelled_triangle>&
                                            std::size_t number_of_nodes)
 {
   Labelled_topology t;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> edge_tris;
+  // the edges of the triangles, each with the triangle it came from, sorted by edge
+  std::vector<std::pair<std::uint64_t, std::size_t>> edge_tri;
   std::vector<char> used(number_of_nodes, 0);
   std::size_t vertices = 0;
   for(std::size_t i = 0; i < tris.size(); ++i) {
     if(tris[i].label != label) continue;
     ++t.faces;
     for(int k = 0; k < 3; ++k) {
-      edge_tris[edge_key(tris[i].n[k], tris[i].n[(k + 1) % 3])].push_back(i);
+      edge_tri.push_back({edge_key(tris[i].n[k], tris[i].n[(k + 1) % 3]), i});
       if(!used[tris[i].n[k]]) {
         used[tris[i].n[k]] = 1;
         ++vertices;
       }
     }
   }
-  t.euler = long(vertices) - long(edge_tris.size()) + long(t.faces);
-  // components of the faces through edges
-  std::unordered_map<std::size_t, std::size_t> parent;
-  std::function<std::size_t(std::size_t)> find = [&](std::size_t x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+  std::sort(edge_tri.begin(), edge_tri.end());
+  // union-find on the triangles (components through edges) and on the nodes (border loops)
+  std::vector<std::size_t> parent(tris.size()), border_parent(number_of_nodes), border_degree(number_of_nodes, 0);
+  for(std::size_t i = 0; i < tris.size(); ++i) parent[i] = i;
+  for(std::size_t x = 0; x < number_of_nodes; ++x) border_parent[x] = x;
+  auto find = [](std::vector<std::size_t>& p, std::size_t x) {
+    while(p[x] != x) x = p[x] = p[p[x]];
     return x;
   };
-  for(std::size_t i = 0; i < tris.size(); ++i)
-    if(tris[i].label == label) parent[i] = i;
-  std::unordered_map<std::size_t, std::size_t> border_parent, border_degree;
-  std::function<std::size_t(std::size_t)> border_find = [&](std::size_t x) {
-    while(border_parent[x] != x) x = border_parent[x] = border_parent[border_parent[x]];
-    return x;
-  };
-  for(const auto& e : edge_tris) {
-    if(e.second.size() >= 2) {
-      for(std::size_t k = 1; k < e.second.size(); ++k) parent[find(e.second[k])] = find(e.second[0]);
-      continue;
+  std::size_t edges = 0;
+  for(std::size_t first = 0; first < edge_tri.size();) {
+    std::size_t last = first + 1;
+    while(last < edge_tri.size() && edge_tri[last].first == edge_tri[first].first) ++last;
+    ++edges;
+    if(last - first >= 2) {
+      for(std::size_t k = first + 1; k < last; ++k)
+        parent[find(parent, edge_tri[k].second)] = find(parent, edge_tri[first].second);
+    } else {
+      const std::size_t a = std::size_t(edge_tri[first].first >> 32),
+                        b = std::size_t(edge_tri[first].first & 0xffffffffu);
+      ++border_degree[a];
+      ++border_degree[b];
+      border_parent[find(border_parent, a)] = find(border_parent, b);
     }
-    const std::size_t a = std::size_t(e.first >> 32), b = std::size_t(e.first & 0xffffffffu);
-    for(std::size_t x : {a, b})
-      if(border_parent.emplace(x, x).second) border_degree[x] = 0;
-    ++border_degree[a];
-    ++border_degree[b];
-    border_parent[border_find(a)] = border_find(b);
+    first = last;
   }
-  for(const auto& p : parent)
-    if(find(p.first) == p.first) ++t.components;
-  for(const auto& p : border_parent)
-    if(border_find(p.first) == p.first) ++t.border_loops;
-  for(const auto& d : border_degree)
-    if(d.second > 2) ++t.pinches;
+  t.euler = long(vertices) - long(edges) + long(t.faces);
+  for(std::size_t i = 0; i < tris.size(); ++i)
+    if(tris[i].label == label && find(parent, i) == i) ++t.components;
+  for(std::size_t x = 0; x < number_of_nodes; ++x)
+    if(border_degree[x] > 0) {
+      if(find(border_parent, x) == x) ++t.border_loops;
+      if(border_degree[x] > 2) ++t.pinches;
+    }
   return t;
 }
 
