@@ -17,6 +17,7 @@
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 #include <CGAL_QD/smooth_chart_boundaries.h>
+#include <CGAL_QD/smooth_chart_cuts.h>
 #include <CGAL_QD/vsa_segmentation.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -772,7 +773,7 @@ BOOST_AUTO_TEST_CASE(vsa_chart_count_does_not_depend_on_the_resolution)
   expect_counts_within_15_percent(rows);
 }
 
-// The full series of scripts/resolution_series.sh, too slow for every run:
+// The full series of doc/segmentation_results.md, too slow for every run:
 // elephant from a quarter of its faces to subdivided twice (89K faces), and
 // bunny00 at a quarter, a half and all of its 75K faces. Run it by name:
 //   test_segmentation --run_test=vsa_resolution_series --log_level=message [-- OUT_DIR]
@@ -1137,6 +1138,81 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(constrained_and_smooth_borders_stay, Mesh, Mesh_ty
   BOOST_REQUIRE(r);
   BOOST_TEST(r.curves_already_smooth == 1u);
   BOOST_TEST(num_faces(flat) == faces_before);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(staircase_cut_inside_a_chart_is_cut_smooth, Mesh, Mesh_types)
+{
+  // one chart with a staircase slit from a corner of the grid to its middle
+  const std::size_t n = 12;
+  Mesh tm = make<Mesh>(flat_grid(n, n));
+  const Face_map<Mesh> stairs = staircase_charts(tm, n);
+  Face_map<Mesh> chart;
+  for(auto f : faces(tm)) chart[f] = 7;
+  typedef typename boost::graph_traits<Mesh>::edge_descriptor edge_descriptor;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<edge_descriptor, bool> cut;
+  for(auto e : edges(tm)) cut[e] = false;
+  for(auto e : chart_borders(tm, stairs)) {
+    const P3 p = p3(tm, source(halfedge(e, tm), tm)), q = p3(tm, target(halfedge(e, tm), tm));
+    if(p[0] + p[1] < 1.0 + 1e-9 && q[0] + q[1] < 1.0 + 1e-9) cut[e] = true;
+  }
+  auto cut_edges = [&]() {
+    std::vector<edge_descriptor> out;
+    for(const auto& ec : cut)
+      if(ec.second) out.push_back(ec.first);
+    return out;
+  };
+  // the free end of the slit, and its other end on the mesh border
+  auto ends = [&]() {
+    std::map<vertex_descriptor, int> degree;
+    for(auto e : cut_edges()) {
+      ++degree[source(halfedge(e, tm), tm)];
+      ++degree[target(halfedge(e, tm), tm)];
+    }
+    std::vector<P3> out;
+    for(const auto& vd : degree) {
+      BOOST_TEST((vd.second == 1 || vd.second == 2));
+      if(vd.second == 1) out.push_back(p3(tm, vd.first));
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const std::vector<P3> ends_before = ends();
+  BOOST_REQUIRE(ends_before.size() == 2u);
+  const double before = QD::seam_zigzag(tm, cut_edges()).zigzag;
+  BOOST_REQUIRE(before > 1.1);
+  const std::size_t faces_before = num_faces(tm);
+  const QD::Boundary_smoothing_result r =
+      QD::smooth_chart_cuts(tm, boost::make_assoc_property_map(chart), boost::make_assoc_property_map(cut));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_curves == 1u);
+  BOOST_TEST(r.curves_smoothed == 1u);
+  BOOST_TEST(r.zigzag_before == before, tt::tolerance(1e-12));
+  BOOST_TEST(r.zigzag_after < 1.03);
+  BOOST_TEST(QD::seam_zigzag(tm, cut_edges()).zigzag == r.zigzag_after, tt::tolerance(1e-12));
+  BOOST_TEST(num_faces(tm) == faces_before + r.faces_added);
+  BOOST_TEST(r.max_border_move < 3.5 / n);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  BOOST_TEST(CGAL::is_triangle_mesh(tm));
+  // the slit keeps its ends, is one chain of edges, and every face keeps its chart
+  BOOST_TEST(ends() == ends_before);
+  for(auto f : faces(tm)) BOOST_TEST(chart[f] == 7u);
+  // the chart with its slit flattens without distortion, and the slit's two sides match
+  const QD::Chart_flattening_result<Mesh> f = QD::flatten_charts(
+      tm, boost::make_assoc_property_map(chart),
+      CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(cut)));
+  BOOST_REQUIRE(f);
+  BOOST_TEST(f.number_of_charts == 1u);
+  BOOST_TEST(f.rejected_charts == 0u);
+  BOOST_TEST(f.max_area_distortion < 1e-6);
+  BOOST_TEST(f.max_seam_length_mismatch < 1e-6);
+  BOOST_TEST(f.seam_zigzag == r.zigzag_after, tt::tolerance(1e-12));
+  // a second call leaves the smooth slit alone
+  const QD::Boundary_smoothing_result again =
+      QD::smooth_chart_cuts(tm, boost::make_assoc_property_map(chart), boost::make_assoc_property_map(cut));
+  BOOST_REQUIRE(again);
+  BOOST_TEST(again.curves_smoothed == 0u);
+  BOOST_TEST(num_faces(tm) == faces_before + r.faces_added);
 }
 
 BOOST_AUTO_TEST_CASE(smoothing_and_flattening_reject_bad_input)

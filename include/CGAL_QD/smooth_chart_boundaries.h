@@ -66,6 +66,32 @@ struct Boundary_smoothing_result
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
+namespace internal {
+
+// counts what the smoother did with one curve
+template <class Outcome>
+void count_outcome(Boundary_smoothing_result& result, Outcome outcome)
+{
+  switch(outcome) {
+  case Outcome::SMOOTHED: ++result.curves_smoothed; break;
+  case Outcome::ALREADY_SMOOTH: ++result.curves_already_smooth; break;
+  case Outcome::KEPT_SHARP: ++result.curves_kept_sharp; break;
+  case Outcome::FAILED: ++result.curves_failed; break;
+  }
+}
+
+// what the smoother changed in the mesh over all its curves
+template <class Smoother>
+void record_changes(Boundary_smoothing_result& result, const Smoother& smoother)
+{
+  result.vertices_added = smoother.vertices_added;
+  result.faces_added = smoother.faces_added;
+  result.max_border_move = smoother.max_move;
+  result.max_relative_border_move = smoother.max_relative_move;
+}
+
+} // namespace internal
+
 
 /// \ingroup PkgCGAL_QDRef
 /// replaces the borders between charts by smooth curves that cut through
@@ -161,18 +187,8 @@ Boundary_smoothing_result smooth_chart_boundaries(TriangleMesh& tm, FaceChartMap
       curves.push_back({c.vertices, c.closed});
   }
   result.number_of_curves = curves.size();
-  for(const auto& c : curves) {
-    switch(smoother.smooth(c.first, c.second)) {
-    case Smoother::Outcome::SMOOTHED: ++result.curves_smoothed; break;
-    case Smoother::Outcome::ALREADY_SMOOTH: ++result.curves_already_smooth; break;
-    case Smoother::Outcome::KEPT_SHARP: ++result.curves_kept_sharp; break;
-    case Smoother::Outcome::FAILED: ++result.curves_failed; break;
-    }
-  }
-  result.vertices_added = smoother.vertices_added;
-  result.faces_added = smoother.faces_added;
-  result.max_border_move = smoother.max_move;
-  result.max_relative_border_move = smoother.max_relative_move;
+  for(const auto& c : curves) internal::count_outcome(result, smoother.smooth(c.first, c.second));
+  internal::record_changes(result, smoother);
   result.zigzag_after = seam_zigzag(tm, internal::chart_seams(tm, face_chart, ecm), measure_np).zigzag;
   result.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
