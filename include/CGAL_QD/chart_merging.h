@@ -40,6 +40,8 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <queue>
 #include <thread>
 #include <tuple>
@@ -157,7 +159,8 @@ struct Merge_thresholds
 };
 
 // Flattens a set of faces of `tm` cut open along the cut edges, by LPFB+IP,
-// and measures the result. Thread-safe: `evaluate` only reads shared data.
+// and measures the result. Thread-safe: `evaluate` only reads shared data
+// (and takes a scratch buffer from a pool under a lock).
 template <class TriangleMesh, class FIM, class VIM>
 class Chart_evaluator
 {
@@ -187,10 +190,15 @@ public:
   {
     Chart_report rep;
     rep.number_of_faces = faces.size();
-    std::vector<long> local(num_faces(m_tm), -1);
-    for(std::size_t i = 0; i < faces.size(); ++i) local[get(m_fim, faces[i])] = static_cast<long>(i);
     Wedges<TriangleMesh> wedges;
-    compute_wedges(m_tm, m_fim, faces, local, is_cut, wedges);
+    {
+      // the position of every face of the set, in a buffer kept between
+      // trials: a trial sets and resets only its own faces
+      Scratch_buffer local(*this);
+      for(std::size_t i = 0; i < faces.size(); ++i) (*local)[get(m_fim, faces[i])] = static_cast<long>(i);
+      compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
+      for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
+    }
     Mesh sm;
     sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
                static_cast<typename Mesh::size_type>(3 * faces.size()),
@@ -346,6 +354,36 @@ public:
   }
 
 private:
+  // a face-index buffer of the mesh's size, all -1, taken from the
+  // evaluator's pool for one trial and given back (all -1 again) after it
+  class Scratch_buffer
+  {
+  public:
+    explicit Scratch_buffer(const Chart_evaluator& e) : m_e(e)
+    {
+      {
+        std::lock_guard<std::mutex> lock(m_e.m_scratch_mutex);
+        if(!m_e.m_scratch.empty()) {
+          m_buffer = std::move(m_e.m_scratch.back());
+          m_e.m_scratch.pop_back();
+        }
+      }
+      if(!m_buffer) m_buffer.reset(new std::vector<long>(num_faces(m_e.m_tm), -1));
+    }
+    ~Scratch_buffer()
+    {
+      std::lock_guard<std::mutex> lock(m_e.m_scratch_mutex);
+      m_e.m_scratch.push_back(std::move(m_buffer));
+    }
+    Scratch_buffer(const Scratch_buffer&) = delete;
+    Scratch_buffer& operator=(const Scratch_buffer&) = delete;
+    std::vector<long>& operator*() { return *m_buffer; }
+
+  private:
+    const Chart_evaluator& m_e;
+    std::unique_ptr<std::vector<long>> m_buffer;
+  };
+
   auto trial_parameters() const
   {
     return parameters::arap_border(m_thresholds.arap_border,
@@ -387,6 +425,8 @@ private:
   VIM m_vim;
   const std::vector<std::array<double, 3>>& m_points;
   Merge_thresholds m_thresholds;
+  mutable std::mutex m_scratch_mutex;
+  mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
 };
 
 // Runs `task(i)` for i in [0, n), in parallel when ConcurrencyTag is
