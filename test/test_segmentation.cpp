@@ -1222,6 +1222,20 @@ BOOST_AUTO_TEST_CASE(smoothing_and_flattening_reject_bad_input)
   BOOST_TEST(QD::smooth_chart_boundaries(empty, boost::make_assoc_property_map(chart)).status ==
              QD::Error_code::EMPTY_MESH);
   BOOST_TEST(QD::flatten_charts(empty, boost::make_assoc_property_map(chart)).status == QD::Error_code::EMPTY_MESH);
+  std::map<Surface_mesh::Edge_index, bool> cut;
+  BOOST_TEST(QD::smooth_chart_cuts(empty, boost::make_assoc_property_map(chart), boost::make_assoc_property_map(cut))
+                 .status == QD::Error_code::EMPTY_MESH);
+  // a quadrangle
+  Surface_mesh quad;
+  const auto q0 = quad.add_vertex(Surface_mesh::Point(0, 0, 0)), q1 = quad.add_vertex(Surface_mesh::Point(1, 0, 0)),
+             q2 = quad.add_vertex(Surface_mesh::Point(1, 1, 0)), q3 = quad.add_vertex(Surface_mesh::Point(0, 1, 0));
+  chart[quad.add_face(q0, q1, q2, q3)] = 0;
+  BOOST_TEST(QD::smooth_chart_boundaries(quad, boost::make_assoc_property_map(chart)).status ==
+             QD::Error_code::NOT_TRIANGLE_MESH);
+  BOOST_TEST(QD::smooth_chart_cuts(quad, boost::make_assoc_property_map(chart), boost::make_assoc_property_map(cut))
+                 .status == QD::Error_code::NOT_TRIANGLE_MESH);
+  BOOST_TEST(num_faces(quad) == 1u);
+  chart.clear();
   Surface_mesh bad = make<Surface_mesh>(flat_grid(4, 4));
   const auto v = *vertices(bad).begin();
   bad.point(v) = Surface_mesh::Point(std::nan(""), 0, 0);
@@ -1230,6 +1244,18 @@ BOOST_AUTO_TEST_CASE(smoothing_and_flattening_reject_bad_input)
   BOOST_TEST(QD::smooth_chart_boundaries(bad, boost::make_assoc_property_map(chart)).status ==
              QD::Error_code::INVALID_COORDINATES);
   BOOST_TEST(num_faces(bad) == nf);  // nothing changed
+  // cuts in the invalid mesh: refused, and left as they were
+  for(auto e : edges(bad)) cut[e] = false;
+  std::size_t cuts_before = 0;
+  for(auto e : edges(bad))
+    if(!is_border_edge(halfedge(e, bad), bad) && cuts_before < 3) {
+      cut[e] = true;
+      ++cuts_before;
+    }
+  BOOST_TEST(QD::smooth_chart_cuts(bad, boost::make_assoc_property_map(chart), boost::make_assoc_property_map(cut))
+                 .status == QD::Error_code::INVALID_COORDINATES);
+  BOOST_TEST(num_faces(bad) == nf);
+  BOOST_TEST(std::count_if(cut.begin(), cut.end(), [](const auto& c) { return c.second; }) == long(cuts_before));
   BOOST_TEST(QD::flatten_charts(bad, boost::make_assoc_property_map(chart)).status ==
              QD::Error_code::INVALID_COORDINATES);
 }
