@@ -189,6 +189,53 @@ BOOST_AUTO_TEST_CASE(solver_choice_and_fallback)
   }
 }
 
+// Simplicial_LDLT_solver solves all the columns of a right-hand side in one
+// pass over the factor: the same numbers, to the last bit, as Eigen's solve()
+// column by column, with the AMD and the natural ordering, for 1 to 3 columns
+BOOST_AUTO_TEST_CASE(simplicial_ldlt_solves_columns_as_eigen_does)
+{
+  // a symmetric positive definite matrix on a 20 x 20 grid (lower triangle),
+  // and right-hand sides with a few zero entries
+  const int k = 20, n = k * k;
+  std::vector<Eigen::Triplet<double>> t;
+  for(int i = 0; i < k; ++i)
+    for(int j = 0; j < k; ++j) {
+      const int r = i * k + j;
+      double d = 0.1 + 0.01 * ((r * 7) % 5);
+      for(const auto& o : {std::make_pair(0, 1), std::make_pair(1, 0), std::make_pair(1, 1)}) {
+        const int i2 = i + o.first, j2 = j + o.second;
+        if(i2 >= k || j2 >= k) continue;
+        const double w = 0.3 + 0.1 * ((r + 3 * i2 + j2) % 7);
+        t.emplace_back(i2 * k + j2, r, -w);
+        d += w;
+      }
+      // diagonally dominant: d holds the weights to the next vertices, and the
+      // at most three weights from the previous ones are below 0.9 each
+      t.emplace_back(r, r, d + 3.);
+    }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  for(int cols = 1; cols <= 3; ++cols) {
+    Eigen::MatrixXd B(n, cols);
+    for(int r = 0; r < n; ++r)
+      for(int c = 0; c < cols; ++c) B(r, c) = r % 11 == 0 ? 0. : std::sin(0.37 * r + c);
+    QD::Simplicial_LDLT_solver ours;
+    BOOST_REQUIRE(ours.factorize(A));
+    Eigen::MatrixXd X;
+    BOOST_REQUIRE(ours.solve(B, X));
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> amd(A);
+    const Eigen::MatrixXd Y = amd.solve(B);
+    BOOST_TEST((X.array() == Y.array()).all());
+    QD::Eigen_symmetric_solver<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>>
+        natural("natural");
+    BOOST_REQUIRE(natural.factorize(A));
+    BOOST_REQUIRE(natural.solve(B, X));
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> plain(A);
+    BOOST_TEST((X.array() == plain.solve(B).array()).all());
+    BOOST_TEST((A.selfadjointView<Eigen::Lower>() * X - B).norm() < 1e-10 * B.norm());
+  }
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(bad_input_writes_nothing, Mesh, Mesh_types)
 {
   {
