@@ -46,57 +46,56 @@ template <class Matrix, int UpLo, class Ordering>
 struct Is_simplicial_LDLT<Eigen::SimplicialLDLT<Matrix, UpLo, Ordering>> : std::true_type
 {};
 
-// X = A^-1 B with the factorisation P A P^T = L D L^T of `ldlt`, all the
-// columns of B at once: one pass over L for each triangular solve, where
-// Eigen makes one per column. Every column goes through the same operations
-// in the same order as in Eigen's SimplicialLDLT::solve(), so X is the same
-// to the last bit.
+// X = A^-1 B with the factorisation P A P^T = L D L^T of `ldlt`. A B of two
+// columns (the u and v of a flattening) is solved in one pass over L for each
+// triangular solve, where Eigen makes one per column; every column goes
+// through the same operations in the same order as in Eigen's
+// SimplicialLDLT::solve(), so X is the same to the last bit. Any other B, or
+// an L not in compressed storage, goes to Eigen's solve().
 template <class Solver>
 void solve_ldlt_columns(const Solver& ldlt, const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
 {
-  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Rows;
   const auto& L = ldlt.matrixL().nestedExpression();  // strictly lower part, by columns
-  const Eigen::Index n = L.cols(), m = B.cols();
-  Rows y;
+  if(B.cols() != 2 || L.innerNonZeroPtr()) {
+    X = ldlt.solve(B);
+    return;
+  }
+  // the two columns of a row side by side
+  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> y;
   if(ldlt.permutationP().size() > 0) y = ldlt.permutationP() * B;
   else y = B;  // natural ordering
   double* Y = y.data();
+  const Eigen::Index n = L.cols();
   const auto* outer = L.outerIndexPtr();
   const auto* inner = L.innerIndexPtr();
-  const auto* nnz = L.innerNonZeroPtr();
   const double* value = L.valuePtr();
   const auto& d = ldlt.vectorD();
-  if(m == 2 && !nnz) {
-    // L y = b
-    for(Eigen::Index j = 0; j < n; ++j) {
-      const double a = Y[2 * j], b = Y[2 * j + 1];
-      if(a == 0 && b == 0) continue;
-      for(auto p = outer[j], e = outer[j + 1]; p < e; ++p) {
-        double* yi = Y + 2 * inner[p];
-        if(a != 0) yi[0] -= a * value[p];
-        if(b != 0) yi[1] -= b * value[p];
-      }
+  // L y = y
+  for(Eigen::Index j = 0; j < n; ++j) {
+    const double a = Y[2 * j], b = Y[2 * j + 1];
+    if(a == 0 && b == 0) continue;
+    for(auto p = outer[j], e = outer[j + 1]; p < e; ++p) {
+      double* yi = Y + 2 * inner[p];
+      if(a != 0) yi[0] -= a * value[p];
+      if(b != 0) yi[1] -= b * value[p];
     }
-    // D y = y
-    for(Eigen::Index i = 0; i < n; ++i) {
-      const double inverse = 1. / d[i];
-      Y[2 * i] = inverse * Y[2 * i];
-      Y[2 * i + 1] = inverse * Y[2 * i + 1];
+  }
+  // D y = y
+  for(Eigen::Index i = 0; i < n; ++i) {
+    const double inverse = 1. / d[i];
+    Y[2 * i] = inverse * Y[2 * i];
+    Y[2 * i + 1] = inverse * Y[2 * i + 1];
+  }
+  // L^T y = y
+  for(Eigen::Index j = n - 1; j >= 0; --j) {
+    double a = Y[2 * j], b = Y[2 * j + 1];
+    for(auto p = outer[j], e = outer[j + 1]; p < e; ++p) {
+      const double* yi = Y + 2 * inner[p];
+      a -= value[p] * yi[0];
+      b -= value[p] * yi[1];
     }
-    // L^T y = y
-    for(Eigen::Index j = n - 1; j >= 0; --j) {
-      double a = Y[2 * j], b = Y[2 * j + 1];
-      for(auto p = outer[j], e = outer[j + 1]; p < e; ++p) {
-        const double* yi = Y + 2 * inner[p];
-        a -= value[p] * yi[0];
-        b -= value[p] * yi[1];
-      }
-      Y[2 * j] = a;
-      Y[2 * j + 1] = b;
-    }
-  } else {
-    X = ldlt.solve(B);
-    return;
+    Y[2 * j] = a;
+    Y[2 * j + 1] = b;
   }
   if(ldlt.permutationPinv().size() > 0) X = ldlt.permutationPinv() * y;
   else X = y;

@@ -133,12 +133,12 @@ Boundary_smoothing_result smooth_chart_cuts(TriangleMesh& tm, FaceChartMap face_
   // the cut curves, before any change; their ends: vertices on the mesh border,
   // on a chart border or on an edge that must stay
   std::vector<std::pair<std::vector<vertex_descriptor>, bool>> curves;
-  Label unused{};  // two chart ids above every chart: the two sides of a cut while it is smoothed
+  Label largest{};  // the largest chart id: the two ids above it are the two sides of a cut while it is smoothed
   {
     bool first = true;
     for(face_descriptor f : faces(tm)) {
       const Label l = get(face_chart, f);
-      if(first || l > unused) unused = l;
+      if(first || l > largest) largest = l;
       first = false;
     }
     const auto vim = CGAL::get_initialized_vertex_index_map(tm);
@@ -152,7 +152,7 @@ Boundary_smoothing_result smooth_chart_cuts(TriangleMesh& tm, FaceChartMap face_
     };
     for(const auto& c : internal::seam_curves(tm, seams, vim, him, is_end)) curves.push_back({c.vertices, c.closed});
   }
-  const Label side_a = unused + 1, side_b = unused + 2;
+  const Label side_a = largest + 1, side_b = largest + 2;
   result.number_of_curves = curves.size();
 
   typedef internal::Constrained_or_cut_map<typename std::remove_const<decltype(ecm)>::type, CutMap> Either;
