@@ -24,8 +24,15 @@
 // seams no longer have matching sides where they had, are smoothed less at the
 // next try, then left along the edges (--no-smooth-seams keeps the edge seams).
 //
-// usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter]
-//                     [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
+// patterns.svg is drawn at --scale drawing units (--units, mm by default) per
+// mesh unit, or with the model's largest dimension --size (200mm, 20cm, 8in);
+// without either, the model is 200 mm at its largest, or less (to whole
+// millimetres) so that every piece fits on a page, and the summary says which.
+// --page, the margins, the spacing and the tabs are in millimetres whatever
+// --units is.
+//
+// usage: segment_mesh <mesh> [--out-dir DIR] [--size 200mm | --scale S] [--units mm|cm|in|pt|pc|px]
+//                     [--page a4|a3|letter] [--tabs] [--vsa-tolerance T] [--max-area-distortion 0.10]
 //                     [--max-stretch 2.0] [--max-local-area-distortion 0.025]
 //                     [--criterion lpfb-ip-arap|lpfb-ip] [--arap-border free|keep-lengths]
 //                     [--denoise | --no-denoise] [--no-refine] [--no-merge] [--no-smooth-seams]
@@ -69,7 +76,8 @@ namespace {
 
 int usage()
 {
-  std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--scale S] [--units mm] [--page a4|a3|letter] [--tabs]\n"
+  std::cerr << "usage: segment_mesh <mesh> [--out-dir DIR] [--size 200mm | --scale S] [--units mm|cm|in|pt|pc|px]\n"
+               "                    [--page a4|a3|letter] [--tabs]\n"
                "                    [--vsa-tolerance T] [--max-area-distortion 0.10] [--max-stretch 2.0]\n"
                "                    [--max-local-area-distortion 0.025] [--criterion lpfb-ip-arap|lpfb-ip]\n"
                "                    [--arap-border free|keep-lengths]\n"
@@ -178,6 +186,8 @@ int main(int argc, char** argv)
   CGAL_QD::Arap_border arap_border = CGAL_QD::Arap_border::FREE;
   std::string out_dir;
   CGAL_QD::IO::Pattern_options pattern;
+  std::string size;  // --size, resolved once the units are known
+  double page_mm[2] = {210, 297};
   for(int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--json") json = true;
@@ -191,14 +201,14 @@ int main(int argc, char** argv)
     else if(a == "--sequential") sequential = true;
     else if(a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
     else if(a == "--scale") { if(!read_number(i, argc, argv, pattern.scale)) return usage(); }
+    else if(a == "--size" && i + 1 < argc) size = argv[++i];
     else if(a == "--units" && i + 1 < argc) pattern.units = argv[++i];
     else if(a == "--tabs") pattern.tabs = true;
     else if(a == "--page" && i + 1 < argc) {
       const std::string page = argv[++i];
-      // in millimetres; the page follows --units only for mm
-      if(page == "a4") pattern.page_width = 210, pattern.page_height = 297;
-      else if(page == "a3") pattern.page_width = 297, pattern.page_height = 420;
-      else if(page == "letter") pattern.page_width = 215.9, pattern.page_height = 279.4;
+      if(page == "a4") page_mm[0] = 210, page_mm[1] = 297;
+      else if(page == "a3") page_mm[0] = 297, page_mm[1] = 420;
+      else if(page == "letter") page_mm[0] = 215.9, page_mm[1] = 279.4;
       else return usage();
     }
     else if(a == "--merge-order" && i + 1 < argc) {
@@ -226,6 +236,33 @@ int main(int argc, char** argv)
       else return usage();
     }
     else return usage();
+  }
+  // the page, its margin, the spacing and the tabs are given in millimetres:
+  // into the drawing's units
+  const double mm_per_unit = CGAL_QD::IO::millimetres_per_unit(pattern.units);
+  if(mm_per_unit == 0) {
+    std::cerr << "segment_mesh: --units " << pattern.units << " is not one of mm, cm, in, pt, pc, px\n";
+    return EXIT_FAILURE;
+  }
+  pattern.page_width = page_mm[0] / mm_per_unit;
+  pattern.page_height = page_mm[1] / mm_per_unit;
+  pattern.page_margin /= mm_per_unit;
+  pattern.spacing /= mm_per_unit;
+  pattern.tab_width /= mm_per_unit;
+  if(!size.empty()) {
+    // a length with its unit (200mm, 20cm, 8in), or a number in the drawing's units
+    char* end = nullptr;
+    const double value = std::strtod(size.c_str(), &end);
+    const std::string unit = end == size.c_str() ? std::string() : std::string(end);
+    const double factor = unit.empty() ? 1. : CGAL_QD::IO::millimetres_per_unit(unit) / mm_per_unit;
+    if(end == size.c_str() || !(factor > 0) || !std::isfinite(value) || !(value > 0) || pattern.scale > 0) {
+      std::cerr << "segment_mesh: --size " << size
+                << (pattern.scale > 0 ? " and --scale cannot be given together"
+                                      : " is not a positive length such as 200mm, 20cm or 8in")
+                << "\n";
+      return EXIT_FAILURE;
+    }
+    pattern.model_size = value * factor;
   }
 
   // reading and repairs in one place: say what was repaired, or what is wrong
@@ -534,8 +571,13 @@ int main(int argc, char** argv)
     }
     std::ostringstream message;
     message << "  wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage << "), patterns.svg ("
-            << pages.number_of_pages << (pages.number_of_pages == 1 ? " page" : " pages") << " at " << pattern.scale
-            << ' ' << pattern.units << " per mesh unit";
+            << pages.number_of_pages << (pages.number_of_pages == 1 ? " page" : " pages") << ", the model "
+            << number(pages.model_size) << ' ' << pattern.units << " at its largest, " << number(pages.scale) << ' '
+            << pattern.units << " per mesh unit";
+    if(pages.reduced_to_fit)
+      message << ", less than " << number(200 / mm_per_unit) << ' ' << pattern.units
+              << " so that every piece fits on a page";
+    if(pattern.scale == 0 && pattern.model_size == 0) message << "; --size or --scale to change";
     if(pages.oversized_charts > 0) message << ", " << pages.oversized_charts << " pieces larger than a page";
     message << "), segmentation.svg and report.json into " << dir.string() << "\n";
     written = message.str();

@@ -1,7 +1,8 @@
 cmake_policy(SET CMP0007 NEW)
-# Runs segment_mesh (PROGRAM) on malformed mesh files written into WORK_DIR and
-# checks, for each, a non-zero exit code, a message naming the problem on
-# standard error, and that nothing was written.
+# Runs segment_mesh (PROGRAM) on malformed mesh files written into WORK_DIR,
+# and on a good one with bad options, and checks, for each, a non-zero exit
+# code, a message naming the problem on standard error, and that nothing was
+# written.
 
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -72,6 +73,36 @@ if(NOT code EQUAL 1 OR NOT stderr MATCHES "does not exist" OR EXISTS "${WORK_DIR
 else()
   message("ok     missing.off")
 endif()
+# bad pattern options on a good mesh
+file(WRITE "${WORK_DIR}/square.off" "OFF\n4 2 0\n${good_vertices}3 0 1 2\n3 0 2 3\n")
+set(option_cases
+  "--units furlong|is not one of mm, cm, in"
+  "--size big|is not a positive length"
+  "--size -200mm|is not a positive length"
+  "--size 200parsecs|is not a positive length"
+  "--size 200mm --scale 3|cannot be given together"
+  "--scale 0|usage"
+  "--page a9|usage"
+)
+set(k 0)
+foreach(case IN LISTS option_cases)
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 1 expected)
+  list(GET parts 0 options)
+  separate_arguments(parts UNIX_COMMAND "${options}")
+  math(EXPR k "${k} + 1")
+  set(out "${WORK_DIR}/out_option_${k}")
+  execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/square.off" --out-dir "${out}" --quiet ${parts}
+                  RESULT_VARIABLE code ERROR_VARIABLE stderr TIMEOUT 60)
+  if(NOT code EQUAL 1 OR NOT stderr MATCHES "${expected}" OR EXISTS "${out}")
+    math(EXPR failures "${failures} + 1")
+    message("FAILED ${parts}: exit code ${code}, stderr: ${stderr}")
+  else()
+    string(STRIP "${stderr}" stderr)
+    string(REGEX REPLACE "\n.*" "" stderr "${stderr}")
+    message("ok     ${parts}: ${stderr}")
+  endif()
+endforeach()
 if(failures GREATER 0)
-  message(FATAL_ERROR "${failures} malformed files were not refused cleanly")
+  message(FATAL_ERROR "${failures} malformed files or bad options were not refused cleanly")
 endif()

@@ -2,7 +2,7 @@
 # Installs the dependencies, builds the examples and runs the main demo:
 # segment_mesh on the default mesh, fandisk from Debian's libcgal-demo (which
 # the dependencies include), or on the mesh given as first argument; further
-# arguments go to segment_mesh (for instance --scale 10 --units mm --tabs).
+# arguments go to segment_mesh (for instance --size 150mm --tabs).
 # The outputs go to build/demo/: charts.ply, atlas.obj, atlas.mtl,
 # patterns.svg and segmentation.svg.
 set -euo pipefail
@@ -16,7 +16,7 @@ if [ $# -ge 1 ]; then
   shift
   "$build/examples/segment_mesh" "$mesh" --out-dir "$build/demo" "$@"
 else
-  # fandisk is about 1 mesh unit tall: 80 mm per unit puts its four pieces on one A4 page
-  "$build/examples/segment_mesh" "$build/cgal_data/data/meshes/fandisk.off" --out-dir "$build/demo" \
-    --scale 80 --tabs
+  # the pattern at the default size: the model 200 mm at its largest, or less
+  # (fandisk: 100 mm) so that every piece fits on an A4 page
+  "$build/examples/segment_mesh" "$build/cgal_data/data/meshes/fandisk.off" --out-dir "$build/demo" --tabs
 fi

@@ -15,10 +15,12 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -28,6 +30,7 @@
 #include <vector>
 
 namespace QD = CGAL_QD;
+namespace tt = boost::test_tools;
 using namespace qd_test;
 
 namespace {
@@ -225,6 +228,116 @@ BOOST_AUTO_TEST_CASE(obj_with_uv_keeps_every_corner)
   BOOST_TEST(ss.str().empty());
 }
 
+namespace {
+
+// what a pattern drew for one piece: the box around its lines and tabs, its
+// page, the sizes of its labels, and the elements by kind
+struct Drawn_piece
+{
+  std::size_t chart = 0, page = 0;
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  double largest_seam_label = 0, chart_label = 0;
+  void add(double x, double y)
+  {
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+};
+
+struct Drawn_pattern
+{
+  std::vector<Drawn_piece> pieces;
+  std::map<std::string, int> labels;  // seam label -> times drawn
+  std::size_t cuts = 0, charts = 0, tabs = 0;
+  double worst_length_error = 0;  // |printed length - scale * 3D length| over the cut lines
+  double page_width = 0, page_height = 0;
+};
+
+Drawn_pattern parse_pattern(std::istream& in, const Surface_mesh& tm, double scale, std::size_t pages)
+{
+  Drawn_pattern d;
+  boost::property_tree::ptree tree;
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(in, tree));
+  const auto& svg = tree.get_child("svg");
+  {
+    std::istringstream box(svg.get<std::string>("<xmlattr>.viewBox"));
+    double a, b, h;
+    box >> a >> b >> d.page_width >> h;
+    d.page_height = h / pages;
+  }
+  std::vector<Surface_mesh::Vertex_index> vs(vertices(tm).begin(), vertices(tm).end());
+  for(const auto& group : svg) {
+    if(group.first != "g") continue;
+    BOOST_TEST(group.second.get<std::string>("<xmlattr>.class") == "piece");
+    Drawn_piece piece;
+    piece.chart = group.second.get<std::size_t>("<xmlattr>.data-chart");
+    piece.page = group.second.get<std::size_t>("<xmlattr>.data-page");
+    for(const auto& child : group.second) {
+      const auto& node = child.second;
+      const std::string cls = node.get<std::string>("<xmlattr>.class", "");
+      if(child.first == "text" && cls == "seam") {
+        ++d.labels[node.data()];
+        piece.largest_seam_label = std::max(piece.largest_seam_label, node.get<double>("<xmlattr>.font-size"));
+      }
+      if(child.first == "text" && cls == "chart") {
+        ++d.charts;
+        piece.chart_label = node.get<double>("<xmlattr>.font-size");
+      }
+      if(child.first == "polygon" && cls == "tab") {
+        ++d.tabs;
+        std::istringstream pts(node.get<std::string>("<xmlattr>.points"));
+        std::string xy;
+        while(pts >> xy) piece.add(std::stod(xy.substr(0, xy.find(','))), std::stod(xy.substr(xy.find(',') + 1)));
+      }
+      if(child.first == "line") {
+        const double ax = node.get<double>("<xmlattr>.x1"), ay = node.get<double>("<xmlattr>.y1"),
+                     bx = node.get<double>("<xmlattr>.x2"), by = node.get<double>("<xmlattr>.y2");
+        piece.add(ax, ay);
+        piece.add(bx, by);
+        if(cls != "cut") continue;
+        ++d.cuts;
+        std::istringstream ids(node.get<std::string>("<xmlattr>.data-v"));
+        std::size_t i, j;
+        ids >> i >> j;
+        const double l3 = std::sqrt(CGAL::squared_distance(tm.point(vs[i]), tm.point(vs[j])));
+        d.worst_length_error = std::max(d.worst_length_error, std::abs(std::hypot(bx - ax, by - ay) - scale * l3));
+      }
+    }
+    d.pieces.push_back(piece);
+  }
+  return d;
+}
+
+// every piece inside its page's margins, no two pieces' boxes overlapping, and
+// labels smaller than the pieces
+void expect_pieces_apart_within_margins(const Drawn_pattern& d, double margin)
+{
+  for(std::size_t a = 0; a < d.pieces.size(); ++a) {
+    const Drawn_piece& p = d.pieces[a];
+    const double top = p.page * d.page_height;
+    BOOST_TEST(p.x0 >= margin - 1e-3);
+    BOOST_TEST(p.x1 <= d.page_width - margin + 1e-3);
+    BOOST_TEST(p.y0 - top >= margin - 1e-3, "piece " << p.chart << " reaches " << p.y0 - top << " from its page's top");
+    BOOST_TEST(p.y1 - top <= d.page_height - margin + 1e-3);
+    const double side = std::min(p.x1 - p.x0, p.y1 - p.y0);
+    BOOST_TEST(p.chart_label <= side / 3 + 1e-3, "piece " << p.chart << " of side " << side);
+    BOOST_TEST(p.largest_seam_label <= side / 4 + 1e-3, "piece " << p.chart << " of side " << side);
+    for(std::size_t b = 0; b < a; ++b) {
+      const Drawn_piece& q = d.pieces[b];
+      const bool apart = p.page != q.page || p.x1 < q.x0 || q.x1 < p.x0 || p.y1 < q.y0 || q.y1 < p.y0;
+      BOOST_TEST(apart, "pieces " << p.chart << " and " << q.chart << " overlap");
+    }
+  }
+}
+
+// the longest side of the bounding box
+double extent(const Surface_mesh& tm)
+{
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(tm);
+  return std::max({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+}
+
+} // namespace
+
 BOOST_AUTO_TEST_CASE(patterns_are_true_scale_with_matching_labels)
 {
   for(const Segmented& s : meshes()) {
@@ -238,59 +351,121 @@ BOOST_AUTO_TEST_CASE(patterns_are_true_scale_with_matching_labels)
     BOOST_TEST_MESSAGE(pr.number_of_charts << " pieces on " << pr.number_of_pages << " pages, " << pr.seam_labels
                                            << " seam labels, " << pr.fold_lines << " fold lines, " << pr.tabs << " tabs");
     BOOST_TEST(pr.number_of_charts == s.result.number_of_charts);
-    // well-formed XML, parsed by Boost.PropertyTree
-    boost::property_tree::ptree tree;
-    BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
-    const auto& svg = tree.get_child("svg");
-    std::map<std::string, int> labels;
-    std::size_t cuts = 0, charts = 0, tabs = 0;
-    std::vector<Surface_mesh::Vertex_index> vs(vertices(s.tm).begin(), vertices(s.tm).end());
-    double worst = 0;
-    for(const auto& child : svg) {
-      const auto& node = child.second;
-      const std::string cls = node.get<std::string>("<xmlattr>.class", "");
-      if(child.first == "text" && cls == "seam") ++labels[node.data()];
-      if(child.first == "text" && cls == "chart") ++charts;
-      if(child.first == "polygon" && cls == "tab") ++tabs;
-      if(child.first == "line" && cls == "cut") {
-        ++cuts;
-        std::istringstream ids(node.get<std::string>("<xmlattr>.data-v"));
-        std::size_t i, j;
-        ids >> i >> j;
-        const double l3 = std::sqrt(CGAL::squared_distance(s.tm.point(vs[i]), s.tm.point(vs[j])));
-        const double l2 = std::hypot(node.get<double>("<xmlattr>.x2") - node.get<double>("<xmlattr>.x1"),
-                                     node.get<double>("<xmlattr>.y2") - node.get<double>("<xmlattr>.y1"));
-        worst = std::max(worst, std::abs(l2 - options.scale * l3));
-      }
-    }
+    BOOST_TEST(pr.scale == 100.);
+    BOOST_TEST(!pr.reduced_to_fit);
+    const Drawn_pattern d = parse_pattern(ss, s.tm, options.scale, pr.number_of_pages);
     // printed edge lengths are the 3D lengths at the scale, to the SVG's 4 decimals
-    BOOST_TEST(worst < 2e-4);
-    BOOST_TEST(cuts == pr.cut_edges);
-    BOOST_TEST(charts == s.result.number_of_charts);
-    BOOST_TEST(tabs == pr.tabs);
-    BOOST_TEST(labels.size() == pr.seam_labels);
-    for(const auto& l : labels) BOOST_TEST(l.second == 2, "label " << l.first << " appears " << l.second << " times");
+    BOOST_TEST(d.worst_length_error < 2e-4);
+    BOOST_TEST(d.pieces.size() == s.result.number_of_charts);
+    BOOST_TEST(d.cuts == pr.cut_edges);
+    BOOST_TEST(d.charts == s.result.number_of_charts);
+    BOOST_TEST(d.tabs == pr.tabs);
+    BOOST_TEST(d.labels.size() == pr.seam_labels);
+    for(const auto& l : d.labels) BOOST_TEST(l.second == 2, "label " << l.first << " appears " << l.second << " times");
     // every seam edge is cut on both sides, every mesh border edge on one
     std::size_t border = 0;
     for(auto h : halfedges(s.tm)) border += is_border(h, s.tm);
     BOOST_TEST(pr.cut_edges == 2 * s.result.seam_edges.size() + border);
+    if(pr.oversized_charts == 0) expect_pieces_apart_within_margins(d, options.page_margin);
   }
+}
+
+// Without a scale, the model is 200 mm at its largest, or less, to whole
+// millimetres, when a piece would not fit on the page at that size; whatever
+// the size of the mesh's coordinates
+BOOST_AUTO_TEST_CASE(patterns_default_to_a_real_size)
+{
+  for(const Segmented& s : meshes())
+    for(double factor : {1e-3, 1., 1e4}) {
+      Surface_mesh tm = s.tm;
+      for(auto v : vertices(tm)) tm.point(v) = CGAL::ORIGIN + factor * (tm.point(v) - CGAL::ORIGIN);
+      std::vector<std::array<double, 2>> uv = s.result.corner_uv;
+      for(auto& c : uv) c = {{factor * c[0], factor * c[1]}};
+      std::map<Surface_mesh::Face_index, std::size_t> chart;
+      {
+        auto f = faces(s.tm).begin();
+        for(auto g : faces(tm)) chart[g] = s.chart.at(*f++);
+      }
+      std::vector<Surface_mesh::Edge_index> seams(s.result.seam_edges.begin(), s.result.seam_edges.end());
+      QD::IO::Pattern_options options;
+      options.tabs = true;
+      std::stringstream ss;
+      const QD::IO::Pattern_result pr =
+          QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(chart), uv, seams, options);
+      BOOST_REQUIRE(pr);
+      BOOST_TEST_MESSAGE("model " << pr.model_size << " mm at " << pr.scale << " mm per unit, "
+                                  << pr.number_of_pages << " pages" << (pr.reduced_to_fit ? ", reduced to fit" : ""));
+      BOOST_TEST(pr.scale * extent(tm) == pr.model_size, tt::tolerance(1e-12));
+      if(pr.reduced_to_fit) {
+        BOOST_TEST(pr.model_size < 200.);
+        BOOST_TEST(pr.model_size == std::floor(pr.model_size + 1e-9), tt::tolerance(1e-9));  // whole millimetres
+      } else {
+        BOOST_TEST(pr.model_size == 200., tt::tolerance(1e-12));
+      }
+      BOOST_TEST(pr.oversized_charts == 0u);
+      const Drawn_pattern d = parse_pattern(ss, tm, pr.scale, pr.number_of_pages);
+      BOOST_TEST(d.worst_length_error < 2e-4);
+      BOOST_TEST(d.pieces.size() == s.result.number_of_charts);
+      expect_pieces_apart_within_margins(d, options.page_margin);
+    }
+}
+
+// a model size or a unit given; a size too large for the page is reported
+BOOST_AUTO_TEST_CASE(patterns_take_a_model_size_and_units)
+{
+  const Segmented& s = meshes().back();
+  const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+  QD::IO::Pattern_options options;
+  options.model_size = 120;
+  std::stringstream ss;
+  QD::IO::Pattern_result pr = QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+  BOOST_REQUIRE(pr);
+  BOOST_TEST(pr.model_size == 120., tt::tolerance(1e-12));
+  BOOST_TEST(!pr.reduced_to_fit);
+  expect_pieces_apart_within_margins(parse_pattern(ss, s.tm, pr.scale, pr.number_of_pages), options.page_margin);
+
+  options.model_size = 2000;  // two metres: some piece is larger than an A4 page, and said so
+  ss.str("");
+  pr = QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+  BOOST_REQUIRE(pr);
+  BOOST_TEST(pr.oversized_charts > 0u);
+  BOOST_TEST(pr.number_of_pages >= pr.oversized_charts);  // each on pages of its own
+
+  // in inches, on a letter page: 200 mm is 7.87 in
+  options = QD::IO::Pattern_options();
+  options.units = "in";
+  options.page_width = 8.5, options.page_height = 11, options.page_margin = 0.4, options.spacing = 0.25;
+  ss.str("");
+  pr = QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+  BOOST_REQUIRE(pr);
+  if(!pr.reduced_to_fit) BOOST_TEST(pr.model_size == 200 / 25.4, tt::tolerance(1e-12));
+  BOOST_TEST(ss.str().find("width=\"8.5000in\"") != std::string::npos);
+  expect_pieces_apart_within_margins(parse_pattern(ss, s.tm, pr.scale, pr.number_of_pages), options.page_margin);
 }
 
 BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
 {
   const Segmented& s = meshes().front();
   std::stringstream ss;
+  auto expect_refused = [&](const QD::IO::Pattern_options& bad) {
+    BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                           s.result.seam_edges, bad)
+                    .status == QD::Error_code::INVALID_COORDINATES));
+  };
   QD::IO::Pattern_options bad;
-  bad.scale = 0;
-  BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
-                                         s.result.seam_edges, bad)
-                  .status == QD::Error_code::INVALID_COORDINATES));
+  bad.scale = -1;
+  expect_refused(bad);
+  bad.scale = std::numeric_limits<double>::quiet_NaN();
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.model_size = std::numeric_limits<double>::infinity();
+  expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.page_width = 15;  // narrower than its margins
-  BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
-                                         s.result.seam_edges, bad)
-                  .status == QD::Error_code::INVALID_COORDINATES));
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.units = "furlong";
+  expect_refused(bad);
   BOOST_TEST(ss.str().empty());
 }
 

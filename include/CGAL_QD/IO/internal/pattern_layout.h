@@ -1,0 +1,133 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_IO_INTERNAL_PATTERN_LAYOUT_H
+#define CGAL_QD_IO_INTERNAL_PATTERN_LAYOUT_H
+
+// The page layout of a printed pattern: the scale (given, or chosen so that
+// the model has a physical size and every piece fits on a page), and every
+// piece's box placed in rows on pages.
+
+#include <CGAL_QD/pack_charts.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// where one piece goes: its points turned by `angle` lie in [low, low + size / scale]
+// (mesh units), drawn with the top-left corner of its box (`size`, drawing
+// units, with padding) at `at` on page `page`
+struct Piece_placement
+{
+  double angle = 0;
+  std::array<double, 2> low{{0, 0}}, size{{0, 0}}, at{{0, 0}};
+  std::size_t page = 0;
+  bool used = false;
+};
+
+struct Page_layout
+{
+  std::vector<Piece_placement> pieces;  // by chart id
+  std::vector<std::size_t> order;       // the charts in drawing order
+  std::size_t number_of_pages = 0;
+  std::size_t oversized = 0;  // pieces larger than a page, on pages of their own
+};
+
+// The largest scale (drawing units per mesh unit) at which every rectangle of
+// `boxes` (mesh units), padded by `pad` on every side, fits into usable_w x
+// usable_h, turned if need be; infinity without boxes, 0 when the padding alone
+// does not fit.
+inline double largest_fitting_scale(const std::vector<Rectangle>& boxes, double usable_w, double usable_h, double pad)
+{
+  const double u1 = (std::max)(usable_w, usable_h) - 2 * pad, u2 = (std::min)(usable_w, usable_h) - 2 * pad;
+  if(!(u2 > 0)) return 0;
+  double s = std::numeric_limits<double>::infinity();
+  for(const Rectangle& r : boxes) {
+    const double a = (std::max)(r.size[0], r.size[1]), b = (std::min)(r.size[0], r.size[1]);
+    if(a > 0) s = (std::min)(s, u1 / a);
+    if(b > 0) s = (std::min)(s, u2 / b);
+  }
+  return s;
+}
+
+// Places the boxes of the charts (`boxes[k]`, mesh units; `used[k]` false for
+// an id without faces) at `scale` in rows on pages of page_w x page_h with
+// `margin` free on every side, each box padded by `pad`, the tallest first.
+inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std::vector<bool>& used, double scale,
+                                  double page_w, double page_h, double margin, double pad)
+{
+  Page_layout layout;
+  const std::size_t n = boxes.size();
+  layout.pieces.resize(n);
+  const double usable_w = page_w - 2 * margin, usable_h = page_h - 2 * margin;
+  for(std::size_t k = 0; k < n; ++k) {
+    if(!used[k]) continue;
+    const Rectangle& r = boxes[k];
+    Piece_placement& p = layout.pieces[k];
+    p.used = true;
+    p.angle = r.angle;
+    p.low = r.low;
+    p.size = {{r.size[0] * scale + 2 * pad, r.size[1] * scale + 2 * pad}};
+    // lay it flat, or upright if it fits only so
+    const bool fits = p.size[0] <= usable_w && p.size[1] <= usable_h;
+    const bool fits_turned = p.size[1] <= usable_w && p.size[0] <= usable_h;
+    if((!fits && fits_turned) || (!fits && !fits_turned && p.size[0] > p.size[1] && usable_h > usable_w)) {
+      p.angle += 1.5707963267948966;
+      // turning (x, y) -> (-y, x) maps [lx, lx + w] x [ly, ly + h] to [-ly - h, -ly] x [lx, lx + w]
+      p.low = {{-r.low[1] - r.size[1], r.low[0]}};
+      std::swap(p.size[0], p.size[1]);
+    }
+    if(p.size[0] > usable_w || p.size[1] > usable_h) ++layout.oversized;
+    layout.order.push_back(k);
+  }
+  std::stable_sort(layout.order.begin(), layout.order.end(), [&](std::size_t a, std::size_t b) {
+    return layout.pieces[a].size[1] > layout.pieces[b].size[1];
+  });
+  std::size_t page = 0, last_page = 0;
+  double x = 0, y = 0, row = 0;
+  bool page_used = false;
+  for(std::size_t k : layout.order) {
+    Piece_placement& p = layout.pieces[k];
+    if(p.size[0] > usable_w || p.size[1] > usable_h) {
+      // a piece larger than a page: on pages of its own, as many as its height needs
+      if(page_used) ++page;
+      p.page = page;
+      p.at = {{margin, margin}};
+      const std::size_t span = static_cast<std::size_t>(std::ceil((p.size[1] + 2 * margin) / page_h));
+      last_page = page + span - 1;
+      page += span;
+      x = y = row = 0;
+      page_used = false;
+      continue;
+    }
+    if(page_used && x + p.size[0] > usable_w) {  // next row
+      x = 0;
+      y += row;
+      row = 0;
+    }
+    if(page_used && y + p.size[1] > usable_h) {  // next page
+      ++page;
+      x = y = row = 0;
+    }
+    p.page = page;
+    p.at = {{margin + x, margin + y}};
+    x += p.size[0];
+    row = (std::max)(row, p.size[1]);
+    page_used = true;
+    last_page = page;
+  }
+  layout.number_of_pages = layout.order.empty() ? 0 : last_page + 1;
+  return layout;
+}
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_IO_INTERNAL_PATTERN_LAYOUT_H
