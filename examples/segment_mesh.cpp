@@ -15,14 +15,11 @@
 // saying why, exit code 1 and no output file. On a terminal a progress bar runs on standard error unless
 // --quiet.
 //
-// The seams of the segmentation follow triangle edges; by default they are
-// then replaced by smooth curves through the triangles (the borders between
-// charts by CGAL_QD::smooth_chart_boundaries(), the cuts inside charts by
-// CGAL_QD::smooth_chart_cuts()), the charts flattened again
-// (CGAL_QD::flatten_charts()), and the smoothed mesh is kept if every chart is
-// still within the thresholds; the curves around a chart that is not, or whose
-// seams no longer have matching sides where they had, are smoothed less at the
-// next try, then left along the edges (--no-smooth-seams keeps the edge seams).
+// The seams of the segmentation follow triangle edges; by default
+// CGAL_QD::smooth_segmentation_seams() then replaces them by smooth curves
+// through the triangles wherever every chart stays within the thresholds and
+// every seam whose sides matched in length still does, and the outputs are
+// written from the refined mesh (--no-smooth-seams keeps the edge seams).
 //
 // patterns.svg is drawn at --scale drawing units (--units, mm by default) per
 // mesh unit, or with the model's largest dimension --size (200mm, 20cm, 8in);
@@ -44,10 +41,8 @@
 #include <CGAL_QD/IO/read_mesh.h>
 #include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
-#include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
-#include <CGAL_QD/smooth_chart_boundaries.h>
-#include <CGAL_QD/smooth_chart_cuts.h>
+#include <CGAL_QD/smooth_segmentation_seams.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -306,243 +301,28 @@ int main(int argc, char** argv)
       sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                  : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
   // smooth seams through the triangles, on a copy of the mesh kept only if
-  // every chart still flattens within the thresholds. Every border between
-  // two charts starts with the full smoothing (32 rounds); the borders around
-  // a chart that leaves the thresholds, or between two charts whose seams no
-  // longer match in length where they did, are smoothed less (8 rounds, then
-  // 2: the staircase goes, the course of the border stays), then left along
-  // the edges, and the smoothing is tried again. Once the borders are settled,
-  // the cuts inside the charts are smoothed (32 rounds) on the settled mesh:
-  // the cuts of a chart that leaves the thresholds, or with a seam that stops
-  // matching, go back to the edges, and the smoothing is tried once more
+  // every chart still flattens within the thresholds and every seam that
+  // matched in length still does (CGAL_QD::smooth_segmentation_seams())
   Smoothing smoothing;
   Mesh smoothed;
   if(r && smooth_seams && r.number_of_charts > 1) {
     smoothing.requested = true;
     smoothing.input_faces = r.number_of_faces;
-    typedef std::pair<std::size_t, std::size_t> Chart_pair;
-    auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
-    const std::array<std::size_t, 3> strengths = {32, 8, 2};  // smoothing rounds; level 3: along the edges
-    std::map<Chart_pair, std::size_t> level;                   // of every border, and of the cuts of every chart
-    std::vector<std::vector<Chart_pair>> pairs_of(r.number_of_charts);
-    for(Mesh::Edge_index e : r.seam_edges) {
-      const Mesh::Halfedge_index h = mesh.halfedge(e);
-      const std::size_t a = get(chart, mesh.face(h)), b = get(chart, mesh.face(mesh.opposite(h)));
-      const Chart_pair p = pair_of(a, b);
-      // the cuts wait along the edges until the borders are settled
-      if(level.emplace(p, a == b ? strengths.size() : 0).second) {
-        pairs_of[a].push_back(p);
-        if(a != b) pairs_of[b].push_back(p);
-      }
-    }
-    const bool has_cuts = std::any_of(level.begin(), level.end(), [](const auto& p) { return p.first.first == p.first.second; });
-    auto smooth_less = [&](const Chart_pair& p) {
-      std::size_t& l = level[p];
-      if(l == strengths.size()) return false;
-      ++l;
-      return true;
-    };
-    auto cuts_along_edges = [&](std::size_t c) {
-      const auto it = level.find(pair_of(c, c));
-      if(it == level.end() || it->second == strengths.size()) return false;
-      it->second = strengths.size();
-      return true;
-    };
-    // the seams that did not match before a phase, with their worst mismatch
-    std::map<Chart_pair, double> unmatched_before;
-    for(std::size_t i = 0; i < r.unmatched_seams.size(); ++i)
-      unmatched_before[r.unmatched_seams[i]] = r.max_seam_length_mismatch;
-    CGAL_QD::Chart_flattening_result<Mesh> best;  // the last smoothing with every chart accepted
-    bool cut_phase = false;
-    Mesh settled;                                  // the mesh with the borders settled, in the second phase
-    CGAL_QD::Boundary_smoothing_result settled_result;
-    std::size_t border_curves = 0, cut_curves = 0;
-    double zigzag_before = 1, time_ms = 0;
-    // the borders are settled: the cuts next, on the mesh of the last try that
-    // was kept (the input if none was)
-    auto start_cut_phase = [&]() {
-      if(cut_phase || !has_cuts) return false;
-      cut_phase = true;
-      for(auto& p : level)
-        if(p.first.first == p.first.second) p.second = 0;
-      settled = smoothing.kept ? smoothed : mesh;
-      if(smoothing.kept) {
-        settled_result = smoothing.result;
-        unmatched_before.clear();
-        for(std::size_t i = 0; i < best.unmatched_seams.size(); ++i) {
-          double& m = unmatched_before[best.unmatched_seams[i]];
-          m = (std::max)(m, best.unmatched_seam_mismatch[i]);
-        }
-      }
-      return true;
-    };
-    // at most 8 tries for the borders, then 2 for the cuts
-    for(int round = 0, phase_round = 0;; ++round, ++phase_round) {
-      if(phase_round == (cut_phase ? 2 : 8)) {
-        if(!start_cut_phase()) break;
-        phase_round = 0;
-      }
-      Mesh trial = cut_phase ? settled : mesh;
-      auto trial_chart = trial.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
-      // the cuts inside charts (those of the settled mesh in the second phase),
-      // the cuts smoothed by one call, the edges that stay in one call, and the
-      // borders left along the edges
-      const auto new_cut = trial.add_property_map<Mesh::Edge_index, bool>("e:cut", false);
-      auto cut = new_cut.first;
-      auto cut_now = trial.add_property_map<Mesh::Edge_index, bool>("e:cut_now", false).first;
-      auto keep = trial.add_property_map<Mesh::Edge_index, bool>("e:keep", false).first;
-      auto stays = trial.add_property_map<Mesh::Edge_index, bool>("e:stays", false).first;
-      for(Mesh::Edge_index e : r.seam_edges) {
-        const Mesh::Halfedge_index h = trial.halfedge(e);
-        const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
-        if(a == b && new_cut.second) put(cut, e, true);
-        else if(a != b && level[pair_of(a, b)] == strengths.size()) put(stays, e, true);
-      }
-      // the zigzag of every seam: borders between charts and cuts
-      auto zigzag = [&]() {
-        std::vector<Mesh::Edge_index> seams;
-        for(Mesh::Edge_index e : trial.edges())
-          if(!trial.is_border(e) && (get(cut, e) || get(trial_chart, trial.face(trial.halfedge(e))) !=
-                                                         get(trial_chart, trial.face(trial.opposite(trial.halfedge(e))))))
-            seams.push_back(e);
-        return CGAL_QD::seam_zigzag(trial, seams).zigzag;
-      };
-      if(round == 0) zigzag_before = zigzag();
-      // what the calls of this try did (with the settled borders in the second phase)
-      CGAL_QD::Boundary_smoothing_result sr = settled_result;
-      bool called = false;
-      double round_ms = 0;
-      auto add = [&](const CGAL_QD::Boundary_smoothing_result& s) {
-        sr.status = s.status;
-        sr.number_of_curves += s.number_of_curves;
-        sr.curves_smoothed += s.curves_smoothed;
-        sr.curves_failed += s.curves_failed;
-        sr.vertices_added += s.vertices_added;
-        sr.faces_added += s.faces_added;
-        sr.max_border_move = (std::max)(sr.max_border_move, s.max_border_move);
-        sr.max_relative_border_move = (std::max)(sr.max_relative_border_move, s.max_relative_border_move);
-        sr.time_ms += s.time_ms;
-        round_ms += s.time_ms;
-        called = true;
-      };
-      for(std::size_t l = 0; l < strengths.size() && sr; ++l) {
-        if(std::none_of(level.begin(), level.end(), [&](const auto& p) { return p.second == l; })) continue;
-        // the borders at level l, every other one and the cuts staying
-        bool borders = false;
-        for(Mesh::Edge_index e : trial.edges()) {
-          const Mesh::Halfedge_index h = trial.halfedge(e);
-          if(cut_phase) break;
-          if(trial.is_border(e)) continue;
-          const std::size_t a = get(trial_chart, trial.face(h)), b = get(trial_chart, trial.face(trial.opposite(h)));
-          const bool smooth = a != b && !get(stays, e) && level[pair_of(a, b)] == l;
-          put(keep, e, get(cut, e) || (a != b && !smooth));
-          borders = borders || smooth;
-        }
-        if(borders) {
-          add(CGAL_QD::smooth_chart_boundaries(
-              trial, trial_chart, CGAL::parameters::edge_is_constrained_map(keep).number_of_iterations(strengths[l])));
-          // the halves of a cut edge that the smoothing split stay cuts
-          for(Mesh::Edge_index e : trial.edges())
-            if(get(keep, e) && !trial.is_border(e) &&
-               get(trial_chart, trial.face(trial.halfedge(e))) ==
-                   get(trial_chart, trial.face(trial.opposite(trial.halfedge(e)))))
-              put(cut, e, true);
-          if(!sr) break;
-        }
-        // the cuts of the charts at level l, the other cuts staying
-        bool cuts = false;
-        for(Mesh::Edge_index e : trial.edges()) {
-          const std::size_t c = get(trial_chart, trial.face(trial.halfedge(e)));
-          const bool now = get(cut, e) && level[pair_of(c, c)] == l;
-          put(cut_now, e, now);
-          if(now) put(cut, e, false);
-          cuts = cuts || now;
-        }
-        if(cuts) {
-          const CGAL_QD::Boundary_smoothing_result s = CGAL_QD::smooth_chart_cuts(
-              trial, trial_chart, cut_now, CGAL::parameters::edge_is_constrained_map(cut).number_of_iterations(strengths[l]));
-          if(cut_curves == 0) cut_curves = s.number_of_curves;
-          add(s);
-          for(Mesh::Edge_index e : trial.edges())
-            if(get(cut_now, e)) put(cut, e, true);
-        }
-      }
-      time_ms += round_ms;
-      if(round == 0) {
-        border_curves = sr.number_of_curves;
-        smoothing.result = sr;
-        smoothing.result.zigzag_before = smoothing.result.zigzag_after = zigzag_before;
-      }
-      if(!sr) break;
-      if(!called || sr.curves_smoothed == settled_result.curves_smoothed) {
-        // nothing smoothed in this try
-        if(start_cut_phase()) {
-          phase_round = -1;
-          continue;
-        }
-        break;
-      }
-      sr.zigzag_before = zigzag_before;
-      sr.zigzag_after = zigzag();
-      // the cuts inside charts, and the halves of a cut edge that the smoothing
-      // split: with the borders, they are the seams
-      const auto fnp = QP::max_local_area_distortion(
-          max_local, QP::chart_criterion(criterion, QP::max_area_distortion(max_area, QP::max_l2_stretch(
-                                                        max_stretch, CGAL::parameters::edge_is_constrained_map(cut)))));
-      CGAL_QD::Chart_flattening_result<Mesh> f =
-          sequential ? CGAL_QD::flatten_charts<CGAL::Sequential_tag>(trial, trial_chart, fnp)
-                     : CGAL_QD::flatten_charts<CGAL::Parallel_if_available_tag>(trial, trial_chart, fnp);
-      time_ms += f.time_flatten_ms;
-      if(!f || f.number_of_charts != r.number_of_charts) break;
-      if(!smoothing.kept) smoothing.rejected_charts = f.rejected_charts;
-      // in the first phase, the borders of a rejected chart are smoothed less,
-      // and so is a seam whose sides no longer match, or differ by more than
-      // the worst seam did before the smoothing (for a cut inside a chart: all
-      // the borders of the chart); in the second phase, the cuts of the charts
-      // concerned go back to the edges
-      bool changed = false;
-      for(std::size_t k = 0; k < f.charts.size(); ++k)
-        if(!f.charts[k].accepted) {
-          if(cut_phase)
-            changed = cuts_along_edges(k) || changed;
-          else
-            for(const Chart_pair& p : pairs_of[k]) changed = smooth_less(p) || changed;
-        }
-      bool matched = true;
-      for(std::size_t i = 0; i < f.unmatched_seams.size(); ++i) {
-        const Chart_pair& pair = f.unmatched_seams[i];
-        const auto before = unmatched_before.find(pair);
-        if(before != unmatched_before.end() &&
-           f.unmatched_seam_mismatch[i] <= (std::max)(before->second, r.max_seam_length_mismatch))
-          continue;
-        matched = false;
-        if(cut_phase) {
-          changed = cuts_along_edges(pair.first) || changed;
-          changed = cuts_along_edges(pair.second) || changed;
-        }
-        else if(pair.first != pair.second)
-          changed = smooth_less(pair) || changed;
-        else
-          for(const Chart_pair& p : pairs_of[pair.first]) changed = smooth_less(p) || changed;
-      }
-      // kept if every chart is accepted; in the second phase, only if every seam
-      // still matches as well as it did and the seams are smoother
-      if(f.rejected_charts == 0 && (!cut_phase || !smoothing.kept || (matched && f.seam_zigzag < best.seam_zigzag))) {
-        smoothing.kept = true;
-        smoothing.result = sr;
-        smoothed = std::move(trial);
-        best = std::move(f);
-      }
-      if(!changed) {
-        if(!start_cut_phase()) break;
-        phase_round = -1;
-      }
-    }
-    smoothing.curves = border_curves + cut_curves;
-    smoothing.time_ms = time_ms;
-    if(smoothing.kept) {
-      const double total = r.time_total_ms + time_ms;
-      static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = best;
+    auto smoothed_chart = smoothed.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
+    const auto snp = QP::max_local_area_distortion(
+        max_local, QP::chart_criterion(criterion, QP::max_area_distortion(max_area, QP::max_l2_stretch(max_stretch))));
+    CGAL_QD::Seam_smoothing_result<Mesh> s =
+        sequential ? CGAL_QD::smooth_segmentation_seams<CGAL::Sequential_tag>(mesh, chart, r, smoothed, smoothed_chart, snp)
+                   : CGAL_QD::smooth_segmentation_seams<CGAL::Parallel_if_available_tag>(mesh, chart, r, smoothed,
+                                                                                         smoothed_chart, snp);
+    smoothing.kept = s.kept;
+    smoothing.result = s.smoothing;
+    smoothing.rejected_charts = s.rejected_charts;
+    smoothing.curves = s.number_of_curves;
+    smoothing.time_ms = s.time_ms;
+    if(s.kept) {
+      const double total = r.time_total_ms + s.time_ms;
+      static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(s.flattening);
       r.time_total_ms = total;
     }
   }

@@ -18,8 +18,10 @@
 #include <CGAL_QD/segment_quasi_developable.h>
 #include <CGAL_QD/smooth_chart_boundaries.h>
 #include <CGAL_QD/smooth_chart_cuts.h>
+#include <CGAL_QD/smooth_segmentation_seams.h>
 #include <CGAL_QD/vsa_segmentation.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <boost/property_map/function_property_map.hpp>
@@ -1371,6 +1373,108 @@ BOOST_AUTO_TEST_CASE(flatten_charts_starts_the_optimisation_again_where_lpfb_ip_
   BOOST_TEST(f.charts[0].area_distortion <= 10.);
   BOOST_TEST(f.charts[0].l2_stretch <= 2.0);
 }
+
+#ifdef CGAL_QD_DEMO_MESH_DIR
+// the seams of elephant's segmentation, smoothed by the library: the refined
+// mesh comes out with its charts and a flattening that belongs to it
+BOOST_AUTO_TEST_CASE_TEMPLATE(segmentation_seams_are_smoothed_into_a_new_mesh, Mesh, Mesh_types)
+{
+  Mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/elephant.off", tm));
+  const std::size_t input_faces = num_faces(tm);
+  Face_map<Mesh> chart;
+  const QD::Segmentation_result<Mesh> seg = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(seg);
+  BOOST_REQUIRE(seg.number_of_charts > 1u);
+
+  Mesh out;
+  Face_map<Mesh> out_chart;
+  const QD::Seam_smoothing_result<Mesh> s =
+      QD::smooth_segmentation_seams(tm, boost::make_assoc_property_map(chart), seg, out,
+                                    boost::make_assoc_property_map(out_chart));
+  BOOST_REQUIRE(s);
+  BOOST_TEST_MESSAGE(s.smoothing.curves_smoothed << " of " << s.number_of_curves << " curves smoothed in "
+                                                 << s.tries << " tries, zigzag " << seg.seam_zigzag << " -> "
+                                                 << s.flattening.seam_zigzag);
+  BOOST_REQUIRE(s.kept);
+  BOOST_TEST(num_faces(tm) == input_faces);  // the input stays as it was
+  BOOST_TEST(num_faces(out) > input_faces);  // refined along the new curves
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(out));
+  BOOST_TEST(CGAL::is_triangle_mesh(out));
+  const QD::Chart_flattening_result<Mesh>& f = s.flattening;
+  BOOST_TEST(f.number_of_charts == seg.number_of_charts);
+  BOOST_TEST(f.number_of_faces == num_faces(out));
+  BOOST_TEST(f.rejected_charts == 0u);
+  BOOST_TEST(f.seam_zigzag < seg.seam_zigzag - 0.02);
+  BOOST_TEST(s.smoothing.curves_smoothed > 0u);
+  BOOST_TEST(s.tries >= 1u);
+  std::vector<std::size_t> charts(f.number_of_charts, 0);
+  for(auto fd : faces(out)) {
+    BOOST_REQUIRE(out_chart.count(fd) == 1u);
+    BOOST_REQUIRE(out_chart.at(fd) < f.number_of_charts);
+    ++charts[out_chart.at(fd)];
+  }
+  for(std::size_t c : charts) BOOST_TEST(c > 0u);
+  // the UVs follow the faces of `out`: no corner swapped (no face turned over),
+  // the 2D areas those of the 3D faces up to the charts' area distortion
+  const auto fim = CGAL::get_initialized_face_index_map(out);
+  BOOST_REQUIRE(f.corner_uv.size() == 3 * num_faces(out));
+  double area2 = 0, area3 = 0;
+  std::size_t turned = 0;
+  for(auto fd : faces(out)) {
+    const std::size_t i = get(fim, fd);
+    const auto &a = f.corner_uv[3 * i], &b = f.corner_uv[3 * i + 1], &c = f.corner_uv[3 * i + 2];
+    const double signed_area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    turned += signed_area <= 0;
+    area2 += std::abs(signed_area);
+    area3 += CGAL::Polygon_mesh_processing::face_area(fd, out);
+  }
+  BOOST_TEST(turned == 0u);
+  BOOST_TEST(std::abs(area2 / area3 - 1) <= f.max_area_distortion / 100 + 1e-9);
+  // the seams are edges of `out`: between two charts, or cuts inside one; the
+  // charts flattened again with those cuts are accepted, with the same seams
+  Edge_set<Mesh> cuts;
+  std::size_t borders = 0, between = 0;
+  for(auto e : f.seam_edges) {
+    const auto h = halfedge(e, out);
+    BOOST_REQUIRE(!is_border_edge(h, out));
+    if(out_chart.at(face(h, out)) == out_chart.at(face(opposite(h, out), out)))
+      cuts.insert(e);
+    else
+      ++borders;
+  }
+  for(auto e : edges(out)) {
+    const auto h = halfedge(e, out);
+    between += !is_border_edge(h, out) && out_chart.at(face(h, out)) != out_chart.at(face(opposite(h, out), out));
+  }
+  BOOST_TEST(borders == between);
+  const auto constrained = boost::make_function_property_map<typename boost::graph_traits<Mesh>::edge_descriptor>(
+      [&](typename boost::graph_traits<Mesh>::edge_descriptor e) { return cuts.count(e) > 0; });
+  const QD::Chart_flattening_result<Mesh> again = QD::flatten_charts(
+      out, boost::make_assoc_property_map(out_chart), CGAL::parameters::edge_is_constrained_map(constrained));
+  BOOST_REQUIRE(again);
+  BOOST_TEST(again.rejected_charts == 0u);
+  BOOST_TEST(again.number_of_seam_curves == f.number_of_seam_curves);
+  BOOST_TEST(again.seam_length == f.seam_length, tt::tolerance(1e-9));
+  BOOST_TEST(again.seam_zigzag == f.seam_zigzag, tt::tolerance(1e-9));
+
+  // an output that is not empty, or a segmentation of another mesh: refused, nothing written
+  const std::size_t out_faces = num_faces(out);
+  Face_map<Mesh> other_chart;
+  BOOST_TEST(QD::smooth_segmentation_seams(tm, boost::make_assoc_property_map(chart), seg, out,
+                                           boost::make_assoc_property_map(other_chart))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(num_faces(out) == out_faces);
+  Mesh empty_out;
+  QD::Chart_flattening_result<Mesh> foreign = seg;
+  foreign.number_of_faces += 1;
+  BOOST_TEST(QD::smooth_segmentation_seams(tm, boost::make_assoc_property_map(chart), foreign, empty_out,
+                                           boost::make_assoc_property_map(other_chart))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(num_faces(empty_out) == 0u);
+  BOOST_TEST(other_chart.empty());
+}
+#endif
 
 BOOST_AUTO_TEST_SUITE_END()
 } // namespace seam_measures_tests

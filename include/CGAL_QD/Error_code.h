@@ -30,7 +30,8 @@ enum class Error_code {
   NOT_CONVERGED,           ///< the iteration limit was reached before the tolerance
   CANNOT_OPEN_FILE,        ///< the file does not exist or cannot be read
   INVALID_FILE,            ///< the file is empty, of an unknown format, truncated or malformed
-  INVALID_INDEX            ///< a polygon refers to a point that does not exist
+  INVALID_INDEX,           ///< a polygon refers to a point that does not exist
+  INVALID_ARGUMENT         ///< an argument does not fit: an output that is not empty, a result of another mesh
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -57,6 +58,8 @@ inline const char* error_message(Error_code code)
     case Error_code::INVALID_FILE:
       return "the file is not a valid mesh file (empty, unknown format, truncated, wrong counts or unreadable numbers)";
     case Error_code::INVALID_INDEX: return "a polygon refers to a point that does not exist";
+    case Error_code::INVALID_ARGUMENT:
+      return "an argument does not fit (an output mesh that is not empty, or a result that belongs to another mesh)";
   }
   return "unknown error code";
 }

@@ -1,0 +1,381 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_SMOOTH_SEGMENTATION_SEAMS_H
+#define CGAL_QD_SMOOTH_SEGMENTATION_SEAMS_H
+
+/// \file smooth_segmentation_seams.h
+/// The seams of a finished segmentation made smooth wherever the pieces allow
+/// it: `smooth_chart_boundaries()` and `smooth_chart_cuts()` tried with less
+/// and less smoothing until every chart flattens within the thresholds again
+/// and every seam whose two sides matched in length still does.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/flatten_charts.h>
+#include <CGAL_QD/internal/smoothing_try.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/segmentation_measures.h>
+#include <CGAL_QD/smooth_chart_boundaries.h>
+#include <CGAL_QD/smooth_chart_cuts.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// what `smooth_segmentation_seams()` did.
+template <class TriangleMesh>
+struct Seam_smoothing_result
+{
+  Error_code status = Error_code::OK;
+  /// whether smoothed seams were kept: the output mesh holds them, and `flattening` its charts
+  bool kept = false;
+  /// the smoothing calls of the try that was kept, summed (`zigzag_before` of the input's seams,
+  /// `zigzag_after` of the kept ones); of the first try when none was kept
+  Boundary_smoothing_result smoothing;
+  /// the seam curves smoothing started from: the borders between two charts and the cuts inside charts
+  std::size_t number_of_curves = 0;
+  /// when nothing was kept: the charts beyond the thresholds after the first try
+  std::size_t rejected_charts = 0;
+  std::size_t tries = 0;  ///< smoothings tried and flattened
+  /// the flattening of the charts of the output mesh, when `kept`
+  Chart_flattening_result<TriangleMesh> flattening;
+  double time_ms = 0;  ///< every try: smoothing and flattening
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// replaces the seams of a segmentation, which follow triangle edges, by
+/// smooth curves through the triangles wherever the charts stay within the
+/// thresholds, and returns the refined mesh with its charts and their
+/// flattening. It works on copies; the input is not changed.
+///
+/// Every border between two charts starts with the full smoothing of
+/// `smooth_chart_boundaries()` (32 rounds). After each try the charts are
+/// flattened again (`flatten_charts()`); the borders around a chart that
+/// leaves the thresholds, and the borders between two charts whose seam no
+/// longer matches in length where it did (its two sides within 0.5 %), or
+/// whose sides end further apart than the worst seam of the input, are
+/// smoothed less at the next try (8 rounds, then 2: the staircase goes and the
+/// course of the border stays), then left along the edges; at most 8 tries.
+/// Then, on the mesh with its borders settled, the cuts inside the charts are
+/// smoothed by `smooth_chart_cuts()`: the cuts of a chart that leaves the
+/// thresholds, or with a seam that stops matching, go back to the edges; at
+/// most 2 tries. A try is kept when every chart is accepted (and, for the cuts,
+/// when every seam matches as well as it did and the seams are smoother).
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag` (for the flattenings); the result is the same
+/// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` with an internal
+///         vertex point property map
+/// \tparam FaceChartMap a model of `ReadablePropertyMap` from faces to an integral chart id
+/// \tparam OutputFaceChartMap a model of `WritablePropertyMap` from the faces of `out` to an
+///         integral chart id, that accepts the faces added to `out` (e.g. a `Surface_mesh`
+///         property map of `out`, or an associative map)
+/// \param tm the triangle mesh
+/// \param face_chart the charts of the segmentation
+/// \param segmentation the flattening of those charts (`segment_quasi_developable()`'s result, or
+///        `flatten_charts()`'s): its `seam_edges` (the borders and the cuts inside charts),
+///        `unmatched_seams` and `max_seam_length_mismatch` are used
+/// \param out an empty mesh that receives the refined mesh when smoothed seams are kept
+/// \param out_chart receives the chart of every face of `out`
+/// \param np optional named parameters: the thresholds and criterion of the segmentation
+///   (`CGAL_QD::parameters::max_area_distortion`, `max_l2_stretch`, `max_local_area_distortion`,
+///   `chart_criterion`, `overlap_tolerance`), as given to it
+/// \returns a `Seam_smoothing_result`; with `kept` false, `out` stays empty and the input's
+///          segmentation stands. `INVALID_ARGUMENT` if `out` is not empty or `segmentation` is not
+///          a successful result for `tm`; the statuses of `smooth_chart_boundaries()` on invalid
+///          input. On any status but `OK`, `out` stays empty.
+/// \sa `smooth_chart_boundaries()`, `smooth_chart_cuts()`, `seam_zigzag()`
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
+          class OutputFaceChartMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
+    const TriangleMesh& tm, const FaceChartMap& face_chart, const Chart_flattening_result<TriangleMesh>& segmentation,
+    TriangleMesh& out, OutputFaceChartMap out_chart, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef internal::Smoothing_try<TriangleMesh> Try;
+  typedef std::pair<std::size_t, std::size_t> Chart_pair;
+
+  const auto start = std::chrono::steady_clock::now();
+  Seam_smoothing_result<TriangleMesh> result;
+  if(num_vertices(out) != 0 || num_faces(out) != 0 || !segmentation ||
+     segmentation.number_of_faces != static_cast<std::size_t>(num_faces(tm))) {
+    result.status = Error_code::INVALID_ARGUMENT;
+    return result;
+  }
+  result.status = internal::validate_mesh_to_segment(tm, get(CGAL::vertex_point, tm));
+  if(result.status != Error_code::OK || segmentation.number_of_charts < 2) return result;
+
+  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
+  auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
+  const std::array<std::size_t, 3> strengths = {{32, 8, 2}};  // smoothing rounds; level 3: along the edges
+  const std::size_t along_edges = strengths.size();
+
+  // the input, with its cuts inside charts
+  std::set<edge_descriptor> seams(segmentation.seam_edges.begin(), segmentation.seam_edges.end());
+  auto original = std::make_shared<Try>();
+  original->copy(tm, face_chart, [&](edge_descriptor e) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    return seams.count(e) > 0 && !is_border_edge(h, tm) &&
+           get(face_chart, face(h, tm)) == get(face_chart, face(opposite(h, tm), tm));
+  });
+
+  // the smoothing level of every border, and of the cuts of every chart
+  std::map<Chart_pair, std::size_t> level;
+  std::vector<std::vector<Chart_pair>> pairs_of(segmentation.number_of_charts);
+  for(edge_descriptor e : edges(original->mesh)) {
+    const halfedge_descriptor h = halfedge(e, original->mesh);
+    if(is_border_edge(h, original->mesh)) continue;
+    const std::size_t a = get(original->chart, face(h, original->mesh)),
+                      b = get(original->chart, face(opposite(h, original->mesh), original->mesh));
+    if(a == b && !get(original->cut, e)) continue;
+    if(a >= pairs_of.size() || b >= pairs_of.size()) {  // charts not numbered as in `segmentation`
+      result.status = Error_code::INVALID_ARGUMENT;
+      return result;
+    }
+    const Chart_pair p = pair_of(a, b);
+    // the cuts wait along the edges until the borders are settled
+    if(level.emplace(p, a == b ? along_edges : 0).second) {
+      pairs_of[a].push_back(p);
+      if(a != b) pairs_of[b].push_back(p);
+    }
+  }
+  const bool has_cuts = std::any_of(level.begin(), level.end(), [](const auto& p) { return p.first.first == p.first.second; });
+  auto smooth_less = [&](const Chart_pair& p) {
+    std::size_t& l = level[p];
+    if(l == along_edges) return false;
+    ++l;
+    return true;
+  };
+  auto cuts_along_edges = [&](std::size_t c) {
+    const auto it = level.find(pair_of(c, c));
+    if(it == level.end() || it->second == along_edges) return false;
+    it->second = along_edges;
+    return true;
+  };
+  // the seams that did not match before a phase, with their worst mismatch
+  std::map<Chart_pair, double> unmatched_before;
+  for(const Chart_pair& p : segmentation.unmatched_seams) unmatched_before[p] = segmentation.max_seam_length_mismatch;
+
+  std::shared_ptr<Try> best;                      // the last try with every chart accepted
+  Chart_flattening_result<TriangleMesh> best_flattening;
+  std::shared_ptr<Try> settled = original;        // the mesh with the borders settled, in the second phase
+  Boundary_smoothing_result settled_result;
+  bool cut_phase = false;
+  std::size_t border_curves = 0, cut_curves = 0;
+  double zigzag_before = 1;
+  // the borders are settled: the cuts next, on the mesh of the last try that
+  // was kept (the input if none was)
+  auto start_cut_phase = [&]() {
+    if(cut_phase || !has_cuts) return false;
+    cut_phase = true;
+    for(auto& p : level)
+      if(p.first.first == p.first.second) p.second = 0;
+    if(best) {
+      settled = best;
+      settled_result = result.smoothing;
+      unmatched_before.clear();
+      for(std::size_t i = 0; i < best_flattening.unmatched_seams.size(); ++i) {
+        double& m = unmatched_before[best_flattening.unmatched_seams[i]];
+        m = (std::max)(m, best_flattening.unmatched_seam_mismatch[i]);
+      }
+    }
+    return true;
+  };
+
+  for(int round = 0, phase_round = 0;; ++round, ++phase_round) {
+    if(phase_round == (cut_phase ? 2 : 8)) {
+      if(!start_cut_phase()) break;
+      phase_round = 0;
+    }
+    auto trial = std::make_shared<Try>();
+    trial->copy(settled->mesh, settled->chart, [&](edge_descriptor e) { return get(settled->cut, e); });
+    TriangleMesh& mesh = trial->mesh;
+    auto& chart = trial->chart;
+    auto& cut = trial->cut;
+    auto cut_now = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
+    auto keep = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
+    auto stays = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
+    auto chart_of = [&](halfedge_descriptor h) -> std::size_t { return get(chart, face(h, mesh)); };
+    for(edge_descriptor e : edges(mesh)) {
+      const halfedge_descriptor h = halfedge(e, mesh);
+      put(cut_now, e, false);
+      put(keep, e, false);
+      put(stays, e, false);
+      if(is_border_edge(h, mesh)) continue;
+      const std::size_t a = chart_of(h), b = chart_of(opposite(h, mesh));
+      if(a != b && level[pair_of(a, b)] == along_edges) put(stays, e, true);
+    }
+    // the zigzag of every seam: borders between charts and cuts
+    auto zigzag = [&]() {
+      std::vector<edge_descriptor> all;
+      for(edge_descriptor e : edges(mesh)) {
+        const halfedge_descriptor h = halfedge(e, mesh);
+        if(!is_border_edge(h, mesh) && (get(cut, e) || chart_of(h) != chart_of(opposite(h, mesh)))) all.push_back(e);
+      }
+      return seam_zigzag(mesh, all).zigzag;
+    };
+    if(round == 0) zigzag_before = zigzag();
+    // what the calls of this try did (with the settled borders in the second phase)
+    Boundary_smoothing_result sr = settled_result;
+    bool called = false;
+    auto add = [&](const Boundary_smoothing_result& s) {
+      sr.status = s.status;
+      sr.number_of_curves += s.number_of_curves;
+      sr.curves_smoothed += s.curves_smoothed;
+      sr.curves_failed += s.curves_failed;
+      sr.vertices_added += s.vertices_added;
+      sr.faces_added += s.faces_added;
+      sr.max_border_move = (std::max)(sr.max_border_move, s.max_border_move);
+      sr.max_relative_border_move = (std::max)(sr.max_relative_border_move, s.max_relative_border_move);
+      sr.time_ms += s.time_ms;
+      called = true;
+    };
+    for(std::size_t l = 0; l < strengths.size() && sr; ++l) {
+      if(std::none_of(level.begin(), level.end(), [&](const auto& p) { return p.second == l; })) continue;
+      // the borders at level l, every other one and the cuts staying
+      bool borders = false;
+      for(edge_descriptor e : edges(mesh)) {
+        if(cut_phase) break;
+        const halfedge_descriptor h = halfedge(e, mesh);
+        if(is_border_edge(h, mesh)) continue;
+        const std::size_t a = chart_of(h), b = chart_of(opposite(h, mesh));
+        const bool smooth = a != b && !get(stays, e) && level[pair_of(a, b)] == l;
+        put(keep, e, get(cut, e) || (a != b && !smooth));
+        borders = borders || smooth;
+      }
+      if(borders) {
+        add(smooth_chart_boundaries(mesh, chart,
+                                    CGAL::parameters::edge_is_constrained_map(keep).number_of_iterations(strengths[l])));
+        // the halves of a cut edge that the smoothing split stay cuts
+        for(edge_descriptor e : edges(mesh)) {
+          const halfedge_descriptor h = halfedge(e, mesh);
+          if(get(keep, e) && !is_border_edge(h, mesh) && chart_of(h) == chart_of(opposite(h, mesh))) put(cut, e, true);
+        }
+        if(!sr) break;
+      }
+      // the cuts of the charts at level l, the other cuts staying
+      bool cuts = false;
+      for(edge_descriptor e : edges(mesh)) {
+        const bool now = get(cut, e) && level[pair_of(chart_of(halfedge(e, mesh)), chart_of(halfedge(e, mesh)))] == l;
+        put(cut_now, e, now);
+        if(now) put(cut, e, false);
+        cuts = cuts || now;
+      }
+      if(cuts) {
+        const Boundary_smoothing_result s = smooth_chart_cuts(
+            mesh, chart, cut_now, CGAL::parameters::edge_is_constrained_map(cut).number_of_iterations(strengths[l]));
+        if(cut_curves == 0) cut_curves = s.number_of_curves;
+        add(s);
+        for(edge_descriptor e : edges(mesh))
+          if(get(cut_now, e)) put(cut, e, true);
+      }
+    }
+    if(round == 0) {
+      border_curves = sr.number_of_curves;
+      result.smoothing = sr;
+      result.smoothing.zigzag_before = result.smoothing.zigzag_after = zigzag_before;
+    }
+    if(!sr) {
+      result.status = sr.status;
+      break;
+    }
+    if(!called || sr.curves_smoothed == settled_result.curves_smoothed) {
+      // nothing smoothed in this try
+      if(start_cut_phase()) {
+        phase_round = -1;
+        continue;
+      }
+      break;
+    }
+    sr.zigzag_before = zigzag_before;
+    sr.zigzag_after = zigzag();
+    // the cuts inside charts, and the halves of a cut edge that the smoothing
+    // split: with the borders, they are the seams
+    const auto fnp = parameters::max_local_area_distortion(
+        thresholds.max_local_area_distortion,
+        parameters::chart_criterion(
+            thresholds.criterion,
+            parameters::max_area_distortion(
+                thresholds.max_area_distortion,
+                parameters::max_l2_stretch(
+                    thresholds.max_l2_stretch,
+                    parameters::overlap_tolerance(thresholds.overlap_tolerance,
+                                                  CGAL::parameters::edge_is_constrained_map(cut))))));
+    Chart_flattening_result<TriangleMesh> f = flatten_charts<ConcurrencyTag>(mesh, chart, fnp);
+    ++result.tries;
+    if(!f || f.number_of_charts != segmentation.number_of_charts) break;
+    if(!best) result.rejected_charts = f.rejected_charts;
+    // in the first phase, the borders of a rejected chart are smoothed less,
+    // and so is a seam whose sides no longer match, or differ by more than
+    // the worst seam did before the smoothing (for a cut inside a chart: all
+    // the borders of the chart); in the second phase, the cuts of the charts
+    // concerned go back to the edges
+    bool changed = false;
+    for(std::size_t k = 0; k < f.charts.size(); ++k)
+      if(!f.charts[k].accepted) {
+        if(cut_phase)
+          changed = cuts_along_edges(k) || changed;
+        else
+          for(const Chart_pair& p : pairs_of[k]) changed = smooth_less(p) || changed;
+      }
+    bool matched = true;
+    for(std::size_t i = 0; i < f.unmatched_seams.size(); ++i) {
+      const Chart_pair& pair = f.unmatched_seams[i];
+      const auto before = unmatched_before.find(pair);
+      if(before != unmatched_before.end() &&
+         f.unmatched_seam_mismatch[i] <= (std::max)(before->second, segmentation.max_seam_length_mismatch))
+        continue;
+      matched = false;
+      if(cut_phase) {
+        changed = cuts_along_edges(pair.first) || changed;
+        changed = cuts_along_edges(pair.second) || changed;
+      } else if(pair.first != pair.second) {
+        changed = smooth_less(pair) || changed;
+      } else {
+        for(const Chart_pair& p : pairs_of[pair.first]) changed = smooth_less(p) || changed;
+      }
+    }
+    // kept if every chart is accepted; in the second phase, only if every seam
+    // still matches as well as it did and the seams are smoother
+    if(f.rejected_charts == 0 &&
+       (!cut_phase || !best || (matched && f.seam_zigzag < best_flattening.seam_zigzag))) {
+      result.smoothing = sr;
+      best = trial;
+      best_flattening = std::move(f);
+    }
+    if(!changed) {
+      if(!start_cut_phase()) break;
+      phase_round = -1;
+    }
+  }
+  result.number_of_curves = border_curves + cut_curves;
+  if(result.status == Error_code::OK && best) {
+    result.kept = true;
+    result.flattening = best->copy_into(out, out_chart, best_flattening);
+  }
+  result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_SMOOTH_SEGMENTATION_SEAMS_H
