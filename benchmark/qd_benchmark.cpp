@@ -10,6 +10,8 @@
 //
 // usage: qd_benchmark [--out DIR] [--quick] [--max-faces N] [--budget SECONDS]
 //        qd_benchmark --memory-probe FACES     (internal: peak memory of one flattening)
+//        qd_benchmark --subdivide IN LEVELS OUT (IN Loop-subdivided LEVELS times, written to OUT;
+//                                                for scripts/segmentation_benchmark.sh)
 
 #include "mesh_generators.h"
 
@@ -339,6 +341,20 @@ int main(int argc, char** argv)
       Mesh m = scaling_mesh(std::stoul(argv[i + 1]));
       UV_map uv = m.add_property_map<Mesh::Vertex_index, Epick::Point_2>("v:uv").first;
       return QD::flatten_patch(m, uv) ? 0 : 1;
+    }
+    if(!std::strcmp(argv[i], "--subdivide") && i + 3 < argc) {
+      Mesh m;
+      if(!CGAL::IO::read_polygon_mesh(argv[i + 1], m) || !CGAL::is_triangle_mesh(m)) {
+        std::cerr << "qd_benchmark: cannot read a triangle mesh from '" << argv[i + 1] << "'\n";
+        return EXIT_FAILURE;
+      }
+      const int levels = std::atoi(argv[i + 2]);
+      if(levels > 0) CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(levels));
+      if(!CGAL::IO::write_polygon_mesh(argv[i + 3], m, CGAL::parameters::stream_precision(17))) {
+        std::cerr << "qd_benchmark: cannot write '" << argv[i + 3] << "'\n";
+        return EXIT_FAILURE;
+      }
+      return EXIT_SUCCESS;
     }
     if(!std::strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];
     else if(!std::strcmp(argv[i], "--quick")) quick = true;
