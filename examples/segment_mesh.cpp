@@ -107,6 +107,7 @@ struct Smoothing
   std::size_t rejected_charts = 0;  // after smoothing, when it was not kept
   std::size_t curves = 0;           // the border curves of the segmentation
   std::size_t input_faces = 0;      // the faces of the mesh before the smoothing refined it
+  std::size_t tries = 0;            // smoothings tried and flattened
   double time_ms = 0;               // every round: smoothing and flattening
 };
 
@@ -146,7 +147,7 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
         << ", \"zigzag_after\": " << number(smoothing.result.zigzag_after)
         << ", \"vertices_added\": " << smoothing.result.vertices_added
         << ", \"faces_added\": " << (smoothing.kept ? r.number_of_faces - smoothing.input_faces : 0)
-        << ", \"rejected_charts\": " << smoothing.rejected_charts
+        << ", \"rejected_charts\": " << smoothing.rejected_charts << ", \"tries\": " << smoothing.tries
         << ", \"time_ms\": " << number(smoothing.time_ms) << "}";
   out << ", \"per_chart\": [";
   for(std::size_t k = 0; k < r.charts.size(); ++k) {
@@ -320,6 +321,7 @@ int main(int argc, char** argv)
     smoothing.rejected_charts = s.rejected_charts;
     smoothing.curves = s.number_of_curves;
     smoothing.time_ms = s.time_ms;
+    smoothing.tries = s.tries;
     if(s.kept) {
       const double total = r.time_total_ms + s.time_ms;
       static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(s.flattening);
