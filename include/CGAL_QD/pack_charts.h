@@ -103,10 +103,13 @@ struct Packing_box
   double w, h;  // with the margin
   double x = 0, y = 0;
   bool turned = false;  // placed turned by 90 degrees
+  bool placed = false;  // false: it did not fit below the height limit
 };
 
-// Skyline bottom-left packing into a strip of width `width`; returns the height used.
-inline double skyline_pack(std::vector<Packing_box>& boxes, double width)
+// Skyline bottom-left packing into a strip of width `width`, up to `height`
+// (a box that fits nowhere below it is left unplaced); returns the height used.
+inline double skyline_pack(std::vector<Packing_box>& boxes, double width,
+                           double height = std::numeric_limits<double>::infinity())
 {
   struct Segment { double x, w, y; };
   std::vector<Segment> sky{{0., width, 0.}};
@@ -122,6 +125,7 @@ inline double skyline_pack(std::vector<Packing_box>& boxes, double width)
         if(x + w > width * (1 + 1e-12)) break;
         double y = 0;
         for(std::size_t j = i; j < sky.size() && sky[j].x < x + w; ++j) y = (std::max)(y, sky[j].y);
+        if(y + h > height * (1 + 1e-12)) continue;
         if(y + h < best_y || (y + h == best_y && x < best_x)) {
           best_y = y + h;
           best_x = x;
@@ -129,6 +133,8 @@ inline double skyline_pack(std::vector<Packing_box>& boxes, double width)
         }
       }
     }
+    b.placed = best_y < std::numeric_limits<double>::infinity();
+    if(!b.placed) continue;
     // best_y holds the top of the placed box
     const double w = best_turn ? b.h : b.w, h = best_turn ? b.w : b.h;
     b.turned = best_turn;

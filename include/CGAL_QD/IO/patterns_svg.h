@@ -135,10 +135,11 @@ struct Pattern_result
 ///   model's largest dimension `options.model_size` on paper, or, when that is
 ///   0 too, 200 mm, lowered to whole millimetres until every piece fits on a
 ///   page (`Pattern_result::scale`, `model_size` and `reduced_to_fit` tell);
-/// - each chart is turned to its smallest enclosing rectangle and the charts are
-///   placed in rows on pages of `page_width` x `page_height` (stacked downwards
-///   in one SVG, each page framed and numbered), turned by 90 degrees when that
-///   makes them fit, never within `page_margin` of a page's edge nor within
+/// - each chart is turned to its smallest enclosing rectangle and the charts,
+///   tallest first, are packed page by page bottom-left on a skyline, each
+///   either way up, on pages of `page_width` x `page_height` (stacked downwards
+///   in one SVG, each page framed and numbered), what does not fit going on to
+///   the next page, never within `page_margin` of a page's edge nor within
 ///   `spacing` (and the tabs) of each other; a chart larger than a page (at a
 ///   scale or a model size given) gets as many pages of its own as its height
 ///   needs and overflows their frames (print it tiled, or lower the scale);
@@ -254,7 +255,7 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
     return is_border(opposite(h, tm), tm) || seam.count(edge(h, tm)) > 0;
   };
 
-  // ---- the scale, and every chart in its rectangle placed in rows on pages
+  // ---- the scale, and every chart in its rectangle packed on pages
   std::vector<internal::Rectangle> boxes(n);
   std::vector<bool> used(n, false);
   for(std::size_t k = 0; k < n; ++k) {

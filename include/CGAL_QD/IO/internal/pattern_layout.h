@@ -6,7 +6,7 @@
 
 // The page layout of a printed pattern: the scale (given, or chosen so that
 // the model has a physical size and every piece fits on a page), and every
-// piece's box placed in rows on pages.
+// piece's box packed on pages.
 
 #include <CGAL_QD/pack_charts.h>
 
@@ -58,8 +58,10 @@ inline double largest_fitting_scale(const std::vector<Rectangle>& boxes, double 
 }
 
 // Places the boxes of the charts (`boxes[k]`, mesh units; `used[k]` false for
-// an id without faces) at `scale` in rows on pages of page_w x page_h with
-// `margin` free on every side, each box padded by `pad`, the tallest first.
+// an id without faces) at `scale` on pages of page_w x page_h with `margin`
+// free on every side, each box padded by `pad`: the tallest first, packed
+// bottom-left on a skyline page by page; a box larger than a page after the
+// others, on pages of its own.
 inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std::vector<bool>& used, double scale,
                                   double page_w, double page_h, double margin, double pad)
 {
@@ -87,43 +89,51 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
     if(p.size[0] > usable_w || p.size[1] > usable_h) ++layout.oversized;
     layout.order.push_back(k);
   }
+  // the pieces that fit on a page, tallest first, page by page: each page
+  // packed bottom-left on a skyline (a piece may be turned), what does not fit
+  // goes on to the next page
   std::stable_sort(layout.order.begin(), layout.order.end(), [&](std::size_t a, std::size_t b) {
     return layout.pieces[a].size[1] > layout.pieces[b].size[1];
   });
-  std::size_t page = 0, last_page = 0;
-  double x = 0, y = 0, row = 0;
-  bool page_used = false;
+  std::vector<Packing_box> todo;
+  for(std::size_t k : layout.order) {
+    const Piece_placement& p = layout.pieces[k];
+    if(p.size[0] <= usable_w && p.size[1] <= usable_h) todo.push_back({k, p.size[0], p.size[1]});
+  }
+  std::size_t page = 0;
+  while(!todo.empty()) {
+    skyline_pack(todo, usable_w, usable_h);
+    std::vector<Packing_box> later;
+    for(const Packing_box& b : todo) {
+      if(!b.placed) {
+        later.push_back({b.chart, b.w, b.h});
+        continue;
+      }
+      Piece_placement& p = layout.pieces[b.chart];
+      if(b.turned) {
+        // turning (x, y) -> (-y, x) maps [lx, lx + w] x [ly, ly + h] to [-ly - h, -ly] x [lx, lx + w]
+        const double h = (p.size[1] - 2 * pad) / scale;
+        p.angle += 1.5707963267948966;
+        p.low = {{-p.low[1] - h, p.low[0]}};
+        std::swap(p.size[0], p.size[1]);
+      }
+      p.page = page;
+      p.at = {{margin + b.x, margin + b.y}};
+    }
+    const bool progress = later.size() < todo.size();  // always: every piece here fits on an empty page
+    todo.swap(later);
+    ++page;
+    if(!progress) break;
+  }
+  // a piece larger than a page: on pages of its own, as many as its height needs
   for(std::size_t k : layout.order) {
     Piece_placement& p = layout.pieces[k];
-    if(p.size[0] > usable_w || p.size[1] > usable_h) {
-      // a piece larger than a page: on pages of its own, as many as its height needs
-      if(page_used) ++page;
-      p.page = page;
-      p.at = {{margin, margin}};
-      const std::size_t span = static_cast<std::size_t>(std::ceil((p.size[1] + 2 * margin) / page_h));
-      last_page = page + span - 1;
-      page += span;
-      x = y = row = 0;
-      page_used = false;
-      continue;
-    }
-    if(page_used && x + p.size[0] > usable_w) {  // next row
-      x = 0;
-      y += row;
-      row = 0;
-    }
-    if(page_used && y + p.size[1] > usable_h) {  // next page
-      ++page;
-      x = y = row = 0;
-    }
+    if(p.size[0] <= usable_w && p.size[1] <= usable_h) continue;
     p.page = page;
-    p.at = {{margin + x, margin + y}};
-    x += p.size[0];
-    row = (std::max)(row, p.size[1]);
-    page_used = true;
-    last_page = page;
+    p.at = {{margin, margin}};
+    page += static_cast<std::size_t>(std::ceil((p.size[1] + 2 * margin) / page_h));
   }
-  layout.number_of_pages = layout.order.empty() ? 0 : last_page + 1;
+  layout.number_of_pages = page;
   return layout;
 }
 
