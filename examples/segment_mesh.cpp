@@ -112,7 +112,8 @@ struct Smoothing
 };
 
 template <class Result>
-void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report& input, const Smoothing& smoothing)
+void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report& input, const Smoothing& smoothing,
+                const CGAL_QD::IO::Pattern_result* patterns = nullptr, const std::string& units = std::string())
 {
   out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": "
       << (smoothing.kept ? smoothing.input_faces : r.number_of_faces)
@@ -149,6 +150,11 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
         << ", \"faces_added\": " << (smoothing.kept ? r.number_of_faces - smoothing.input_faces : 0)
         << ", \"rejected_charts\": " << smoothing.rejected_charts << ", \"tries\": " << smoothing.tries
         << ", \"time_ms\": " << number(smoothing.time_ms) << "}";
+  if(patterns)  // in report.json: how patterns.svg was drawn
+    out << ", \"patterns\": {\"pages\": " << patterns->number_of_pages << ", \"units\": \"" << units
+        << "\", \"scale\": " << number(patterns->scale) << ", \"model_size\": " << number(patterns->model_size)
+        << ", \"reduced_to_fit\": " << (patterns->reduced_to_fit ? "true" : "false")
+        << ", \"oversized_pieces\": " << patterns->oversized_charts << "}";
   out << ", \"per_chart\": [";
   for(std::size_t k = 0; k < r.charts.size(); ++k) {
     const CGAL_QD::Chart_report& c = r.charts[k];
@@ -340,13 +346,12 @@ int main(int argc, char** argv)
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(out_mesh, out_chart, r.corner_uv);
     std::ofstream ply(dir / "charts.ply"), obj(dir / "atlas.obj"), mtl(dir / "atlas.mtl"), svg(dir / "patterns.svg"),
         picture(dir / "segmentation.svg"), report(dir / "report.json");
-    print_json(report, r, input, smoothing);
     const bool ok = !ec && atlas && CGAL_QD::IO::write_PLY_with_charts(ply, out_mesh, out_chart) &&
                     CGAL_QD::IO::write_OBJ_with_uv(obj, out_mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
                     (mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
                     (pages = CGAL_QD::IO::write_patterns_SVG(svg, out_mesh, out_chart, r.corner_uv, r.seam_edges, pattern)) &&
                     CGAL_QD::IO::write_segmentation_SVG(picture, out_mesh, out_chart, r.seam_edges) == CGAL_QD::Error_code::OK &&
-                    bool(report);
+                    (print_json(report, r, input, smoothing, &pages, pattern.units), bool(report));
     if(!ok) {
       std::cerr << "segment_mesh: cannot write into '" << out_dir << "'\n";
       return EXIT_FAILURE;

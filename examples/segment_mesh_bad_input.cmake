@@ -2,7 +2,7 @@ cmake_policy(SET CMP0007 NEW)
 # Runs segment_mesh (PROGRAM) on malformed mesh files written into WORK_DIR,
 # and on a good one with bad options, and checks, for each, a non-zero exit
 # code, a message naming the problem on standard error, and that nothing was
-# written.
+# written; then that a good run's report.json says how the pattern was drawn.
 
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -103,6 +103,25 @@ foreach(case IN LISTS option_cases)
     message("ok     ${parts}: ${stderr}")
   endif()
 endforeach()
+# and good ones: report.json says how the pattern was drawn (string(JSON) needs CMake 3.19)
+if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
+  set(out "${WORK_DIR}/out_size")
+  execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/square.off" --out-dir "${out}" --quiet --size 8in --units cm
+                  RESULT_VARIABLE code ERROR_VARIABLE stderr TIMEOUT 60)
+  if(code EQUAL 0 AND EXISTS "${out}/report.json")
+    file(READ "${out}/report.json" report)
+    string(JSON units GET "${report}" patterns units)
+    string(JSON size GET "${report}" patterns model_size)
+    string(JSON reduced GET "${report}" patterns reduced_to_fit)
+  endif()
+  if(NOT code EQUAL 0 OR NOT units STREQUAL "cm" OR NOT size STREQUAL "20.32" OR NOT reduced STREQUAL "OFF")
+    math(EXPR failures "${failures} + 1")
+    message("FAILED --size 8in --units cm: exit code ${code}, units '${units}', model size '${size}', "
+            "reduced '${reduced}', stderr: ${stderr}")
+  else()
+    message("ok     --size 8in --units cm: the model ${size} cm at its largest in report.json")
+  endif()
+endif()
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} malformed files or bad options were not refused cleanly")
 endif()
