@@ -102,13 +102,9 @@ std::string number(double x)
 // what the seam smoothing did
 struct Smoothing
 {
-  bool requested = false, kept = false;
-  CGAL_QD::Boundary_smoothing_result result;
-  std::size_t rejected_charts = 0;  // after smoothing, when it was not kept
-  std::size_t curves = 0;           // the border curves of the segmentation
-  std::size_t input_faces = 0;      // the faces of the mesh before the smoothing refined it
-  std::size_t tries = 0;            // smoothings tried and flattened
-  double time_ms = 0;               // every round: smoothing and flattening
+  bool requested = false;
+  std::size_t input_faces = 0;  // the faces of the mesh before the smoothing refined it
+  CGAL_QD::Seam_smoothing_result<Mesh> result;  // its flattening moved into the segmentation's when kept
 };
 
 template <class Result>
@@ -116,7 +112,7 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
                 const CGAL_QD::IO::Pattern_result* patterns = nullptr, const std::string& units = std::string())
 {
   out << "{\"status\": \"" << CGAL_QD::error_message(r.status) << "\", \"faces\": "
-      << (smoothing.kept ? smoothing.input_faces : r.number_of_faces)
+      << (smoothing.result.kept ? smoothing.input_faces : r.number_of_faces)
             << ", \"repairs\": [";
   const std::vector<std::string> repairs = input.repairs();
   for(std::size_t k = 0; k < repairs.size(); ++k) out << (k ? ", " : "") << '"' << repairs[k] << '"';
@@ -140,16 +136,16 @@ void print_json(std::ostream& out, const Result& r, const CGAL_QD::Repair_report
             << ", \"time_flatten_ms\": " << number(r.time_flatten_ms)
             << ", \"time_total_ms\": " << number(r.time_total_ms);
   if(smoothing.requested)
-    out << ", \"seam_smoothing\": {\"kept\": " << (smoothing.kept ? "true" : "false")
-        << ", \"curves\": " << smoothing.curves
-        << ", \"curves_smoothed\": " << smoothing.result.curves_smoothed
-        << ", \"curves_failed\": " << smoothing.result.curves_failed
-        << ", \"zigzag_before\": " << number(smoothing.result.zigzag_before)
-        << ", \"zigzag_after\": " << number(smoothing.result.zigzag_after)
-        << ", \"vertices_added\": " << smoothing.result.vertices_added
-        << ", \"faces_added\": " << (smoothing.kept ? r.number_of_faces - smoothing.input_faces : 0)
-        << ", \"rejected_charts\": " << smoothing.rejected_charts << ", \"tries\": " << smoothing.tries
-        << ", \"time_ms\": " << number(smoothing.time_ms) << "}";
+    out << ", \"seam_smoothing\": {\"kept\": " << (smoothing.result.kept ? "true" : "false")
+        << ", \"curves\": " << smoothing.result.number_of_curves
+        << ", \"curves_smoothed\": " << smoothing.result.smoothing.curves_smoothed
+        << ", \"curves_failed\": " << smoothing.result.smoothing.curves_failed
+        << ", \"zigzag_before\": " << number(smoothing.result.smoothing.zigzag_before)
+        << ", \"zigzag_after\": " << number(smoothing.result.smoothing.zigzag_after)
+        << ", \"vertices_added\": " << smoothing.result.smoothing.vertices_added
+        << ", \"faces_added\": " << (smoothing.result.kept ? r.number_of_faces - smoothing.input_faces : 0)
+        << ", \"rejected_charts\": " << smoothing.result.rejected_charts << ", \"tries\": " << smoothing.result.tries
+        << ", \"time_ms\": " << number(smoothing.result.time_ms) << "}";
   if(patterns)  // in report.json: how patterns.svg was drawn
     out << ", \"patterns\": {\"pages\": " << patterns->number_of_pages << ", \"units\": \"" << units
         << "\", \"scale\": " << number(patterns->scale) << ", \"model_size\": " << number(patterns->model_size)
@@ -318,23 +314,17 @@ int main(int argc, char** argv)
     auto smoothed_chart = smoothed.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
     const auto snp = QP::max_local_area_distortion(
         max_local, QP::chart_criterion(criterion, QP::max_area_distortion(max_area, QP::max_l2_stretch(max_stretch))));
-    CGAL_QD::Seam_smoothing_result<Mesh> s =
-        sequential ? CGAL_QD::smooth_segmentation_seams<CGAL::Sequential_tag>(mesh, chart, r, smoothed, smoothed_chart, snp)
+    CGAL_QD::Seam_smoothing_result<Mesh>& s = smoothing.result;
+    s = sequential ? CGAL_QD::smooth_segmentation_seams<CGAL::Sequential_tag>(mesh, chart, r, smoothed, smoothed_chart, snp)
                    : CGAL_QD::smooth_segmentation_seams<CGAL::Parallel_if_available_tag>(mesh, chart, r, smoothed,
                                                                                          smoothed_chart, snp);
-    smoothing.kept = s.kept;
-    smoothing.result = s.smoothing;
-    smoothing.rejected_charts = s.rejected_charts;
-    smoothing.curves = s.number_of_curves;
-    smoothing.time_ms = s.time_ms;
-    smoothing.tries = s.tries;
     if(s.kept) {
       const double total = r.time_total_ms + s.time_ms;
       static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(s.flattening);
       r.time_total_ms = total;
     }
   }
-  const Mesh& out_mesh = smoothing.kept ? smoothed : mesh;
+  const Mesh& out_mesh = smoothing.result.kept ? smoothed : mesh;
   const auto out_chart = out_mesh.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
   if(bar) std::fprintf(stderr, "\r%60s\r", "");
   std::string written;
@@ -377,7 +367,7 @@ int main(int argc, char** argv)
     std::cerr << "segment_mesh: " << CGAL_QD::error_message(r.status) << "\n";
     return EXIT_FAILURE;
   }
-  std::cout << path << ": " << (smoothing.kept ? smoothing.input_faces : r.number_of_faces) << " faces\n"
+  std::cout << path << ": " << (smoothing.result.kept ? smoothing.input_faces : r.number_of_faces) << " faces\n"
             << repaired
             << "  VSA            " << r.charts_after_vsa << " charts, " << r.time_vsa_ms << " ms\n"
             << "  refinement     " << r.charts_after_refinement << " charts, " << r.time_refine_ms << " ms\n"
@@ -396,14 +386,15 @@ int main(int argc, char** argv)
             << "  compactness    " << r.compactness << "\n"
             << "  smooth seams   "
             << (!smoothing.requested ? std::string("off")
-                : smoothing.kept
-                    ? std::to_string(smoothing.result.curves_smoothed) + " of " +
-                          std::to_string(smoothing.curves) + " curves through the triangles (" +
+                : smoothing.result.kept
+                    ? std::to_string(smoothing.result.smoothing.curves_smoothed) + " of " +
+                          std::to_string(smoothing.result.number_of_curves) + " curves through the triangles (" +
                           std::to_string(r.number_of_faces - smoothing.input_faces) + " faces added), zigzag " +
-                          number(smoothing.result.zigzag_before) + " -> " + number(smoothing.result.zigzag_after)
-                    : smoothing.result.curves_smoothed == 0
+                          number(smoothing.result.smoothing.zigzag_before) + " -> " +
+                          number(smoothing.result.smoothing.zigzag_after)
+                    : smoothing.result.smoothing.curves_smoothed == 0
                         ? std::string("no curve could be smoothed; seams follow the triangle edges")
-                        : std::to_string(smoothing.rejected_charts) +
+                        : std::to_string(smoothing.result.rejected_charts) +
                               " charts beyond the thresholds once smoothed; seams follow the triangle edges")
             << "\n"
             << "  total          " << r.time_total_ms << " ms\n"

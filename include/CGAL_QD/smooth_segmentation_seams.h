@@ -275,7 +275,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       // the cuts of the charts at level l, the other cuts staying
       bool cuts = false;
       for(edge_descriptor e : edges(mesh)) {
-        const bool now = get(cut, e) && level[pair_of(chart_of(halfedge(e, mesh)), chart_of(halfedge(e, mesh)))] == l;
+        const std::size_t c = get(cut, e) ? chart_of(halfedge(e, mesh)) : 0;  // a cut is never on the mesh border
+        const bool now = get(cut, e) && level[pair_of(c, c)] == l;
         put(cut_now, e, now);
         if(now) put(cut, e, false);
         cuts = cuts || now;

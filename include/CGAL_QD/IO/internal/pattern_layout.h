@@ -69,6 +69,13 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
   const std::size_t n = boxes.size();
   layout.pieces.resize(n);
   const double usable_w = page_w - 2 * margin, usable_h = page_h - 2 * margin;
+  // turns a piece by 90 degrees: turning (x, y) -> (-y, x) maps [lx, lx + w] x
+  // [ly, ly + h] to [-ly - h, -ly] x [lx, lx + w] (h, its height in mesh units)
+  auto turn = [](Piece_placement& p, double h) {
+    p.angle += 1.5707963267948966;
+    p.low = {{-p.low[1] - h, p.low[0]}};
+    std::swap(p.size[0], p.size[1]);
+  };
   for(std::size_t k = 0; k < n; ++k) {
     if(!used[k]) continue;
     const Rectangle& r = boxes[k];
@@ -80,12 +87,8 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
     // lay it flat, or upright if it fits only so
     const bool fits = p.size[0] <= usable_w && p.size[1] <= usable_h;
     const bool fits_turned = p.size[1] <= usable_w && p.size[0] <= usable_h;
-    if((!fits && fits_turned) || (!fits && !fits_turned && p.size[0] > p.size[1] && usable_h > usable_w)) {
-      p.angle += 1.5707963267948966;
-      // turning (x, y) -> (-y, x) maps [lx, lx + w] x [ly, ly + h] to [-ly - h, -ly] x [lx, lx + w]
-      p.low = {{-r.low[1] - r.size[1], r.low[0]}};
-      std::swap(p.size[0], p.size[1]);
-    }
+    if((!fits && fits_turned) || (!fits && !fits_turned && p.size[0] > p.size[1] && usable_h > usable_w))
+      turn(p, r.size[1]);
     if(p.size[0] > usable_w || p.size[1] > usable_h) ++layout.oversized;
     layout.order.push_back(k);
   }
@@ -110,13 +113,7 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
         continue;
       }
       Piece_placement& p = layout.pieces[b.chart];
-      if(b.turned) {
-        // turning (x, y) -> (-y, x) maps [lx, lx + w] x [ly, ly + h] to [-ly - h, -ly] x [lx, lx + w]
-        const double h = (p.size[1] - 2 * pad) / scale;
-        p.angle += 1.5707963267948966;
-        p.low = {{-p.low[1] - h, p.low[0]}};
-        std::swap(p.size[0], p.size[1]);
-      }
+      if(b.turned) turn(p, (p.size[1] - 2 * pad) / scale);
       p.page = page;
       p.at = {{margin + b.x, margin + b.y}};
     }
