@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds the examples and runs the main demo:
+# Installs the dependencies, builds the program segment_mesh and runs the main demo:
 # segment_mesh on the default mesh, fandisk from Debian's libcgal-demo (which
 # the dependencies include), or on the mesh given as first argument; further
 # arguments go to segment_mesh (for instance --size 150mm --tabs).
 # The outputs go to build/demo/: charts.ply, atlas.obj, atlas.mtl,
-# patterns.svg and segmentation.svg.
+# patterns.svg, segmentation.svg and report.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
@@ -14,9 +14,9 @@ cmake --build "$build" -j "$(nproc)" --target segment_mesh
 if [ $# -ge 1 ]; then
   mesh=$1
   shift
-  "$build/examples/segment_mesh" "$mesh" --out-dir "$build/demo" "$@"
+  "$build/programs/segment_mesh" "$mesh" --out-dir "$build/demo" "$@"
 else
   # the pattern at the default size: the model 200 mm at its largest, or less
   # (fandisk, with tabs: 97 mm) so that every piece fits on an A4 page
-  "$build/examples/segment_mesh" "$build/cgal_data/data/meshes/fandisk.off" --out-dir "$build/demo" --tabs
+  "$build/programs/segment_mesh" "$build/cgal_data/data/meshes/fandisk.off" --out-dir "$build/demo" --tabs
 fi

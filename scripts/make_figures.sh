@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the figures of doc/ and the README with examples/segment_mesh:
+# Regenerates the figures of doc/ and the README with programs/segment_mesh:
 # the segmentations of elephant and bunny00 (pictures of the mesh in its chart colours),
 # the true-scale pattern of fandisk (80 mm per mesh unit, with glue tabs), and
 # the net of cube_quad. Run after a build (bash scripts/demo.sh or
@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${CGAL_QD_BUILD_DIR:-build}
-program=$build/examples/segment_mesh
+program=$build/programs/segment_mesh
 meshes=$build/cgal_data/data/meshes
 [ -x "$program" ] || { echo "build first: $program is missing" >&2; exit 1; }
 tmp=$(mktemp -d)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds the unit tests with AddressSanitizer (leaks included) and
-# UndefinedBehaviorSanitizer, CGAL's and Eigen's assertions on, in a build
-# directory of its own, and runs them; any report fails the run. CI runs it
+# Builds the unit tests and segment_mesh with AddressSanitizer (leaks
+# included) and UndefinedBehaviorSanitizer, CGAL's and Eigen's assertions on,
+# in a build directory of its own, and runs them (the program on malformed
+# files and bad options, and on elephant); any report fails the run. CI runs it
 # after scripts/test.sh (which installs the dependencies).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,4 +16,4 @@ cmake --build "$build" -j "$(nproc)"
 cd "$build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:check_initialization_order=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest -L unit --output-on-failure --no-tests=error -j "$(nproc)"
+ctest -L "unit|program" --output-on-failure --no-tests=error -j "$(nproc)"

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Runs examples/segment_mesh on CGAL's real meshes (libcgal-demo) and writes
+# Runs programs/segment_mesh on CGAL's real meshes (libcgal-demo) and writes
 # the table of doc/segmentation_results.md to standard output. Run after a
 # build (bash scripts/test.sh or bash scripts/demo.sh); needs python3.
 # usage: [MESHES="cow elephant"] bash scripts/segment_real_meshes.sh [segment_mesh options] > table.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
 meshes=build/cgal_data/data/meshes
-program=build/examples/segment_mesh
+program=build/programs/segment_mesh
 [ -x "$program" ] || { echo "build first: $program is missing" >&2; exit 1; }
 for name in ${MESHES:-fandisk bunny00 cow camel elephant mannequin-devil armadillo}; do
   "$program" "$meshes/$name.off" --json "$@" | sed "s/^{/{\"mesh\": \"$name\", /"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed of the segmentation (examples/segment_mesh at its defaults), in
+# The speed of the segmentation (segment_mesh at its defaults), in
 # one run, and writes benchmark/results/segmentation.md:
 #
 # 1. this tree against a baseline built from git history (BASELINE, default
@@ -27,7 +27,7 @@ series_limit=${SERIES_LIMIT:-150}
 max_faces=${MAX_FACES:-1500000}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "$(nproc)" --target segment_mesh qd_benchmark
-program=$build/examples/segment_mesh
+program=$build/programs/segment_mesh
 meshes=$build/cgal_data/data/meshes
 
 # the baseline, from git history

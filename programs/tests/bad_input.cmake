@@ -76,13 +76,13 @@ endif()
 # bad pattern options on a good mesh
 file(WRITE "${WORK_DIR}/square.off" "OFF\n4 2 0\n${good_vertices}3 0 1 2\n3 0 2 3\n")
 set(option_cases
-  "--units furlong|is not one of mm, cm, in"
-  "--size big|is not a positive length"
-  "--size -200mm|is not a positive length"
-  "--size 200parsecs|is not a positive length"
-  "--size 200mm --scale 3|cannot be given together"
-  "--scale 0|usage"
-  "--page a9|usage"
+  "--units furlong|--units: furlong not in [{]mm,cm,in,pt,pc,px[}]"
+  "--size big|--size: 'big' is not a positive length"
+  "--size -200mm|--size: '-200mm' is not a positive length"
+  "--size 200parsecs|--size: '200parsecs' is not a positive length"
+  "--size 200mm --scale 3|--size excludes --scale"
+  "--scale 0|--scale: '0' is not a positive number"
+  "--page a9|--page: a9 not in"
 )
 set(k 0)
 foreach(case IN LISTS option_cases)

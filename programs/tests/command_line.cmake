@@ -1,0 +1,119 @@
+# The command line of segment_mesh (PROGRAM): --help lists every option with
+# its default, --version prints VERSION, a bad option or value is named in the
+# error, and what --json prints and report.json holds follow SCHEMA, on MESH.
+# Output directories are written into WORK_DIR.
+
+cmake_minimum_required(VERSION 3.19)
+include(${CMAKE_CURRENT_LIST_DIR}/check_json_schema.cmake)
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(failures "")
+
+# --help: exit code 0, every option, the defaults
+execute_process(COMMAND "${PROGRAM}" --help RESULT_VARIABLE code OUTPUT_VARIABLE help ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  string(APPEND failures "--help: exit code ${code}\n")
+endif()
+foreach(expected
+    "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
+    "--tabs" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
+    "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
+    "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
+    "--quiet" "--version" "Default: 200 mm")
+  string(FIND "${help}" "${expected}" at)
+  if(at LESS 0)
+    string(APPEND failures "--help does not show '${expected}'\n")
+  endif()
+endforeach()
+
+# --version
+execute_process(COMMAND "${PROGRAM}" --version RESULT_VARIABLE code OUTPUT_VARIABLE version)
+if(NOT code EQUAL 0 OR NOT version MATCHES "segment_mesh \\(CGAL_QD\\) ${VERSION}")
+  string(APPEND failures "--version: exit code ${code}, '${version}'\n")
+endif()
+
+# bad options and values: exit code 1, the option named, nothing written
+set(cases
+  "--bogus|not expected: --bogus"
+  "--max-stretch nan|--max-stretch: 'nan' is not a positive number"
+  "--max-area-distortion -0.1|--max-area-distortion: '-0.1' is not a positive number"
+  "--vsa-tolerance 1e999|--vsa-tolerance: '1e999' is not a positive number"
+  "--criterion paper|--criterion: paper not in"
+  "--arap-border fixed|--arap-border: fixed not in"
+  "--merge-order random|--merge-order: random not in"
+  "--out-dir|--out-dir"
+)
+set(k 0)
+foreach(case IN LISTS cases)
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 options)
+  list(GET parts 1 expected)
+  separate_arguments(options UNIX_COMMAND "${options}")
+  math(EXPR k "${k} + 1")
+  set(out "${WORK_DIR}/out_${k}")
+  if(options STREQUAL "--out-dir")
+    execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir RESULT_VARIABLE code ERROR_VARIABLE err)
+  else()
+    execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${out}" ${options}
+                    RESULT_VARIABLE code ERROR_VARIABLE err)
+  endif()
+  string(FIND "${err}" "${expected}" at)
+  if(NOT code EQUAL 1 OR at LESS 0 OR NOT err MATCHES "^segment_mesh: " OR EXISTS "${out}")
+    string(APPEND failures "${options}: exit code ${code}, stderr '${err}'\n")
+  else()
+    string(REGEX REPLACE "\n.*" "" err "${err}")
+    message("ok     ${options}: ${err}")
+  endif()
+endforeach()
+
+# an output directory that is a file: refused, the file left as it was
+file(WRITE "${WORK_DIR}/a_file" "keep")
+execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/a_file"
+                RESULT_VARIABLE code ERROR_VARIABLE err)
+file(READ "${WORK_DIR}/a_file" kept)
+if(NOT code EQUAL 1 OR NOT err MATCHES "cannot write into" OR NOT kept STREQUAL "keep")
+  string(APPEND failures "--out-dir onto a file: exit code ${code}, stderr '${err}'\n")
+endif()
+
+# the report against its schema: --json, then report.json with `patterns`
+file(READ "${SCHEMA}" schema)
+execute_process(COMMAND "${PROGRAM}" "${MESH}" --json RESULT_VARIABLE code OUTPUT_VARIABLE json ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  string(APPEND failures "--json: exit code ${code}, stderr '${err}'\n")
+else()
+  string(STRIP "${json}" json)
+  if(json MATCHES "\n")
+    string(APPEND failures "--json prints more than one line\n")
+  endif()
+  check_json_schema("${json}" "${schema}" "--json" failures)
+  # seam_smoothing with more than one piece; patterns only in report.json
+  string(JSON charts GET "${json}" charts)
+  string(JSON smoothing ERROR_VARIABLE no_smoothing GET "${json}" seam_smoothing)
+  string(JSON patterns ERROR_VARIABLE no_patterns GET "${json}" patterns)
+  if((charts GREATER 1 AND no_smoothing) OR NOT no_patterns)
+    string(APPEND failures "--json: seam_smoothing missing or patterns present\n")
+  endif()
+endif()
+execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out" --size 15cm
+                RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/out/report.json")
+  string(APPEND failures "--out-dir: exit code ${code}, stderr '${err}'\n")
+else()
+  file(READ "${WORK_DIR}/out/report.json" report)
+  check_json_schema("${report}" "${schema}" "report.json" failures)
+  string(JSON size GET "${report}" patterns model_size)
+  if(NOT size EQUAL 150)
+    string(APPEND failures "report.json: model_size '${size}' for --size 15cm\n")
+  endif()
+  file(GLOB written RELATIVE "${WORK_DIR}/out" "${WORK_DIR}/out/*" "${WORK_DIR}/out/.*")
+  list(SORT written)
+  if(NOT written STREQUAL "atlas.mtl;atlas.obj;charts.ply;patterns.svg;report.json;segmentation.svg")
+    string(APPEND failures "--out-dir wrote '${written}'\n")
+  endif()
+endif()
+
+if(failures)
+  message(FATAL_ERROR "segment_mesh's command line:\n${failures}")
+endif()
+message("ok     --help, --version, the report against ${SCHEMA}")
