@@ -10,8 +10,9 @@
 // the seams through the triangles where every piece stays within the
 // thresholds (CGAL_QD::smooth_segmentation_seams()), and prints what every step
 // did, or one JSON object with --json. With --out-dir it writes charts.ply,
-// atlas.obj with atlas.mtl, patterns.svg (every piece at a real size on pages),
-// segmentation.svg and report.json; all of them or, if one cannot be written,
+// atlas.obj with atlas.mtl, patterns.svg and, when built with cairo,
+// patterns.pdf (every piece at a real size on pages), segmentation.svg and
+// report.json; all of them or, if one cannot be written,
 // none. A file that cannot be used, or a bad option, gives a message that says
 // what is wrong, exit code 1 and no output. `segment_mesh --help` lists every
 // option with its default and unit.
@@ -21,6 +22,9 @@
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
 #include <CGAL_QD/IO/patterns_svg.h>
+#ifdef CGAL_QD_HAS_CAIRO
+#include <CGAL_QD/IO/patterns_pdf.h>
+#endif
 #include <CGAL_QD/IO/read_mesh.h>
 #include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
@@ -266,18 +270,26 @@ int main(int argc, char** argv)
     if(ok)
       ok = bool(pages = CGAL_QD::IO::write_patterns_SVG(files.file("patterns.svg"), out_mesh, out_chart,
                                                          r.corner_uv, r.seam_edges, pattern));
+#ifdef CGAL_QD_HAS_CAIRO
+    const bool pdf = true;
+    if(ok)
+      ok = bool(CGAL_QD::IO::write_patterns_PDF(files.file("patterns.pdf"), out_mesh, out_chart, r.corner_uv,
+                                                r.seam_edges, pattern));
+#else
+    const bool pdf = false;
+#endif
     if(ok)
       ok = CGAL_QD::IO::write_segmentation_SVG(files.file("segmentation.svg"), out_mesh, out_chart, r.seam_edges) ==
            CGAL_QD::Error_code::OK;
     if(ok)
       ok = bool(files.file("report.json")
-                << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units})
+                << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units, pdf})
                        .dump(2)
                 << "\n");
     if(!ok || !files.commit()) return fail("cannot write into '" + o.out_dir + "'");
     std::ostringstream message;
-    message << "  wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage << "), patterns.svg ("
-            << pages.number_of_pages << (pages.number_of_pages == 1 ? " page" : " pages") << ", the model "
+    message << "  wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage << "), patterns.svg"
+            << (pdf ? " and patterns.pdf (" : " (") << pages.number_of_pages << (pages.number_of_pages == 1 ? " page" : " pages") << ", the model "
             << segment_mesh::text(pages.model_size) << ' ' << pattern.units << " at its largest, "
             << segment_mesh::text(pages.scale) << ' ' << pattern.units << " per mesh unit";
     if(pages.reduced_to_fit)

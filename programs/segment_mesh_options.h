@@ -92,7 +92,8 @@ inline void add_options(CLI::App& app, Options& o)
 
   app.add_option("mesh", o.mesh, "The triangle mesh: OFF, OBJ, PLY or STL (repaired on reading)")->required();
   app.add_option("--out-dir", o.out_dir,
-                 "Write charts.ply, atlas.obj, atlas.mtl, patterns.svg, segmentation.svg and report.json into DIR "
+                 "Write charts.ply, atlas.obj, atlas.mtl, patterns.svg, patterns.pdf (when built with cairo), "
+                 "segmentation.svg and report.json into DIR "
                  "(created if needed)")
       ->type_name("DIR");
 

@@ -51,11 +51,12 @@ struct Smoothing
   CGAL_QD::Seam_smoothing_result<Mesh> result;  // its flattening moved into the segmentation's when kept
 };
 
-// how patterns.svg was drawn, for report.json
+// how patterns.svg (and patterns.pdf) was drawn, for report.json
 struct Pattern_report
 {
   const CGAL_QD::IO::Pattern_result* result = nullptr;
   std::string units;
+  bool pdf = false;  // whether patterns.pdf was written too
 };
 
 template <class Result, class Mesh>
@@ -112,7 +113,8 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"scale", number(p.scale)},
                      {"model_size", number(p.model_size)},
                      {"reduced_to_fit", p.reduced_to_fit},
-                     {"oversized_pieces", p.oversized_charts}};
+                     {"oversized_pieces", p.oversized_charts},
+                     {"pdf", patterns.pdf}};
   }
   Json charts = Json::array();
   for(std::size_t k = 0; k < r.charts.size(); ++k) {

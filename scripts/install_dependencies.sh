@@ -3,13 +3,16 @@
 # Core: CGAL 5.5, Eigen 3.4, Boost.Graph, Boost.Test, CMake, a C++17 compiler.
 # libcgal-demo brings CGAL's real test meshes; ccache speeds up rebuilds.
 # The program segment_mesh parses its options with CLI11 and writes its report
-# with nlohmann-json (both header-only).
+# with nlohmann-json (both header-only), and writes PDF patterns with cairo
+# (optional; pkg-config finds it); poppler-utils lets a test print a PDF
+# pattern to pixels and measure it.
 # Optional accelerators, detected at configure time: SuiteSparse (CHOLMOD) with
 # OpenBLAS for the interior system of flatten_patch(), TBB for the parallel
 # trials of the chart merging; CGAL_QD builds and works without them.
 set -euo pipefail
 packages=(build-essential cmake ccache libcgal-dev libeigen3-dev libboost-graph-dev
-          libboost-test-dev libcgal-demo libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev libtbb-dev)
+          libboost-test-dev libcgal-demo libcli11-dev nlohmann-json3-dev
+          libcairo2-dev pkg-config poppler-utils libsuitesparse-dev libopenblas-dev libtbb-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

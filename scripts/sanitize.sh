@@ -6,6 +6,7 @@
 # after scripts/test.sh (which installs the dependencies).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root=$PWD
 build=${CGAL_QD_SANITIZE_DIR:-build-sanitize}
 flags="-O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
@@ -16,4 +17,5 @@ cmake --build "$build" -j "$(nproc)"
 cd "$build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:check_initialization_order=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$root/scripts/lsan_suppressions.txt
 ctest -L "unit|program" --output-on-failure --no-tests=error -j "$(nproc)"

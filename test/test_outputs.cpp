@@ -9,6 +9,9 @@
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
 #include <CGAL_QD/IO/patterns_svg.h>
+#ifdef CGAL_QD_HAS_CAIRO
+#include <CGAL_QD/IO/patterns_pdf.h>
+#endif
 #include <CGAL_QD/IO/segmentation_svg.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
@@ -22,6 +25,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
@@ -468,6 +474,149 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   expect_refused(bad);
   BOOST_TEST(ss.str().empty());
 }
+
+#ifdef CGAL_QD_HAS_CAIRO
+namespace {
+
+// the pages of a PDF file as cairo writes it (its object dictionaries are not
+// compressed): every page's MediaBox, in points
+std::vector<std::array<double, 4>> pdf_pages(const std::string& pdf)
+{
+  std::vector<std::array<double, 4>> pages;
+  for(std::size_t at = pdf.find("/Type /Page"); at != std::string::npos; at = pdf.find("/Type /Page", at + 1)) {
+    if(pdf.compare(at, 12, "/Type /Pages") == 0) continue;
+    const std::size_t open = pdf.rfind("<<", at), box = pdf.find("/MediaBox", open);
+    BOOST_REQUIRE(open != std::string::npos && box != std::string::npos);
+    std::istringstream in(pdf.substr(pdf.find('[', box) + 1));
+    std::array<double, 4> b;
+    BOOST_REQUIRE(in >> b[0] >> b[1] >> b[2] >> b[3]);
+    pages.push_back(b);
+  }
+  return pages;
+}
+
+} // namespace
+
+// the PDF has the SVG's pieces and a page per sheet of the page size
+BOOST_AUTO_TEST_CASE(pdf_patterns_have_a_page_per_sheet_of_the_page_size)
+{
+  for(const Segmented& s : meshes()) {
+    const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+    for(const std::string units : {"mm", "in"}) {
+      QD::IO::Pattern_options options;
+      options.tabs = true;
+      if(units == "in") {
+        options.units = "in";
+        options.page_width = 8.5, options.page_height = 11, options.page_margin = 0.4, options.spacing = 0.25;
+        options.tab_width = 0.2;
+      }
+      std::stringstream svg, pdf;
+      const QD::IO::Pattern_result a =
+          QD::IO::write_patterns_SVG(svg, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+      const QD::IO::Pattern_result b =
+          QD::IO::write_patterns_PDF(pdf, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+      BOOST_REQUIRE(a);
+      BOOST_REQUIRE(b);
+      BOOST_TEST(b.scale == a.scale);
+      BOOST_TEST(b.number_of_pages == a.number_of_pages);
+      BOOST_TEST(b.cut_edges == a.cut_edges);
+      BOOST_TEST(b.tabs == a.tabs);
+      BOOST_TEST(b.fold_lines == a.fold_lines);
+      BOOST_TEST(b.seam_labels == a.seam_labels);
+      const std::string file = pdf.str();
+      BOOST_TEST(file.compare(0, 5, "%PDF-") == 0);
+      const std::vector<std::array<double, 4>> pages = pdf_pages(file);
+      BOOST_TEST(pages.size() == b.number_of_pages);
+      // A4 is 595.28 x 841.89 points, letter 612 x 792
+      const double width = units == "mm" ? 210 / 25.4 * 72 : 612, height = units == "mm" ? 297 / 25.4 * 72 : 792;
+      for(const auto& box : pages) {
+        BOOST_TEST(box[0] == 0.);
+        BOOST_TEST(box[1] == 0.);
+        BOOST_TEST(box[2] == width, tt::tolerance(1e-5));
+        BOOST_TEST(box[3] == height, tt::tolerance(1e-5));
+      }
+      BOOST_TEST_MESSAGE(pages.size() << " PDF pages of " << units << ", " << file.size() << " bytes");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(pdf_patterns_refuse_bad_input_and_say_when_they_cannot_write)
+{
+  const Segmented& s = meshes().front();
+  const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+  QD::IO::Pattern_options bad;
+  bad.units = "furlong";
+  std::stringstream ss;
+  BOOST_TEST((QD::IO::write_patterns_PDF(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, bad).status ==
+              QD::Error_code::INVALID_COORDINATES));
+  BOOST_TEST(ss.str().empty());
+  std::ofstream closed;  // no file: every write fails
+  BOOST_TEST((QD::IO::write_patterns_PDF(closed, s.tm, chart, s.result.corner_uv, s.result.seam_edges).status ==
+              QD::Error_code::CANNOT_WRITE));
+  BOOST_TEST((QD::IO::write_patterns_SVG(closed, s.tm, chart, s.result.corner_uv, s.result.seam_edges).status ==
+              QD::Error_code::CANNOT_WRITE));
+}
+
+// A 1 x 1 square at 100 mm per unit, printed to pixels by poppler at 254 dpi
+// (10 pixels per millimetre): its cut lines span 100 mm
+BOOST_AUTO_TEST_CASE(pdf_pattern_prints_at_true_scale)
+{
+  if(std::system("pdftoppm -v > /dev/null 2>&1") != 0) {
+    BOOST_TEST_MESSAGE("pdftoppm (poppler-utils) is not installed: the printed size is not checked");
+    return;
+  }
+  Surface_mesh tm;
+  const auto v0 = tm.add_vertex(Epick::Point_3(0, 0, 0)), v1 = tm.add_vertex(Epick::Point_3(1, 0, 0)),
+             v2 = tm.add_vertex(Epick::Point_3(1, 1, 0)), v3 = tm.add_vertex(Epick::Point_3(0, 1, 0));
+  tm.add_face(v0, v1, v2);
+  tm.add_face(v0, v2, v3);
+  Chart_map chart;
+  std::vector<std::array<double, 2>> uv(6);
+  for(auto f : faces(tm)) {
+    chart[f] = 0;
+    int c = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const Epick::Point_3& p = tm.point(target(h, tm));
+      uv[3 * std::size_t(f) + c++] = {{p.x(), p.y()}};
+    }
+  }
+  QD::IO::Pattern_options options;
+  options.scale = 100;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cgal_qd_pdf_scale";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream out(dir / "square.pdf", std::ios::binary);
+    BOOST_REQUIRE(QD::IO::write_patterns_PDF(out, tm, boost::make_assoc_property_map(chart), uv,
+                                             std::vector<Surface_mesh::Edge_index>(), options));
+  }
+  const std::string command = "pdftoppm -gray -r 254 -f 1 -l 1 '" + (dir / "square.pdf").string() + "' '" +
+                              (dir / "square").string() + "'";
+  BOOST_REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream pgm(dir / "square-1.pgm", std::ios::binary);
+  std::string magic;
+  int width = 0, height = 0, max = 0;
+  BOOST_REQUIRE(pgm >> magic >> width >> height >> max);
+  pgm.get();
+  BOOST_REQUIRE(magic == "P5");
+  std::vector<unsigned char> pixels(std::size_t(width) * height);
+  BOOST_REQUIRE(pgm.read(reinterpret_cast<char*>(pixels.data()), std::streamsize(pixels.size())));
+  // the page: 210 x 297 mm
+  BOOST_TEST(std::abs(width - 2100) <= 1);
+  BOOST_TEST(std::abs(height - 2970) <= 1);
+  // the cut lines are black; the page number and the chart id are grey
+  int left = width, right = -1, top = height, bottom = -1;
+  for(int y = 0; y < height; ++y)
+    for(int x = 0; x < width; ++x)
+      if(pixels[std::size_t(y) * width + x] < 80)
+        left = std::min(left, x), right = std::max(right, x), top = std::min(top, y), bottom = std::max(bottom, y);
+  BOOST_TEST_MESSAGE("the square prints " << (right - left + 1) / 10. << " x " << (bottom - top + 1) / 10.
+                                           << " mm, lines included");
+  // 100 mm and the 0.25 mm line: 1002.5 pixels, within 0.3 mm
+  BOOST_TEST(std::abs(right - left + 1 - 1002.5) <= 3);
+  BOOST_TEST(std::abs(bottom - top + 1 - 1002.5) <= 3);
+  std::filesystem::remove_all(dir);
+}
+#endif // CGAL_QD_HAS_CAIRO
 
 BOOST_AUTO_TEST_CASE(segmentation_picture_draws_every_face_and_seam)
 {

@@ -31,7 +31,8 @@ enum class Error_code {
   CANNOT_OPEN_FILE,        ///< the file does not exist or cannot be read
   INVALID_FILE,            ///< the file is empty, of an unknown format, truncated or malformed
   INVALID_INDEX,           ///< a polygon refers to a point that does not exist
-  INVALID_ARGUMENT         ///< an argument does not fit: an output that is not empty, a result of another mesh
+  INVALID_ARGUMENT,        ///< an argument does not fit: an output that is not empty, a result of another mesh
+  CANNOT_WRITE             ///< the output stream failed, or the library that writes the file did
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -60,6 +61,7 @@ inline const char* error_message(Error_code code)
     case Error_code::INVALID_INDEX: return "a polygon refers to a point that does not exist";
     case Error_code::INVALID_ARGUMENT:
       return "an argument does not fit (an output mesh that is not empty, or a result that belongs to another mesh)";
+    case Error_code::CANNOT_WRITE: return "the output could not be written";
   }
   return "unknown error code";
 }

@@ -1,6 +1,7 @@
 # The command line of segment_mesh (PROGRAM): --help lists every option with
 # its default, --version prints VERSION, a bad option or value is named in the
-# error, and what --json prints and report.json holds follow SCHEMA, on MESH.
+# error, and what --json prints and report.json holds follow SCHEMA, on MESH;
+# with PDF (built with cairo) patterns.pdf is written too.
 # Output directories are written into WORK_DIR.
 
 cmake_minimum_required(VERSION 3.19)
@@ -106,10 +107,17 @@ else()
   if(NOT size EQUAL 150)
     string(APPEND failures "report.json: model_size '${size}' for --size 15cm\n")
   endif()
+  string(JSON pdf GET "${report}" patterns pdf)
   file(GLOB written RELATIVE "${WORK_DIR}/out" "${WORK_DIR}/out/*" "${WORK_DIR}/out/.*")
   list(SORT written)
-  if(NOT written STREQUAL "atlas.mtl;atlas.obj;charts.ply;patterns.svg;report.json;segmentation.svg")
-    string(APPEND failures "--out-dir wrote '${written}'\n")
+  set(expected "atlas.mtl;atlas.obj;charts.ply;patterns.svg;report.json;segmentation.svg")
+  set(expected_pdf OFF)
+  if(PDF)  # built with cairo
+    set(expected "atlas.mtl;atlas.obj;charts.ply;patterns.pdf;patterns.svg;report.json;segmentation.svg")
+    set(expected_pdf ON)
+  endif()
+  if(NOT written STREQUAL expected OR NOT pdf STREQUAL expected_pdf)
+    string(APPEND failures "--out-dir wrote '${written}', report.json says pdf ${pdf}\n")
   endif()
 endif()
 

@@ -1,0 +1,347 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_IO_INTERNAL_PATTERN_DRAWING_H
+#define CGAL_QD_IO_INTERNAL_PATTERN_DRAWING_H
+
+// What a printed pattern shows, before it is written in a file format: the
+// scale, the pages, and for every piece its glue tabs, cut and fold lines,
+// seam labels and id, in drawing units on pages stacked downwards (page p
+// spans y in [p h, (p + 1) h]), y pointing down. IO/patterns_svg.h and
+// IO/patterns_pdf.h write it.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/IO/internal/pattern_layout.h>
+#include <CGAL_QD/IO/pattern_options.h>
+#include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/validation.h>
+#include <CGAL_QD/pack_charts.h>
+#include <CGAL_QD/segmentation_measures.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// seam label of index k: A..Z, then A1..Z1, ...
+inline std::string seam_label(std::size_t k)
+{
+  std::string s(1, char('A' + k % 26));
+  if(k >= 26) s += std::to_string(k / 26);
+  return s;
+}
+
+struct Pattern_drawing
+{
+  typedef std::array<double, 2> P2;
+  enum Line_kind { CUT, MOUNTAIN, VALLEY };
+  struct Line
+  {
+    Line_kind kind;
+    P2 a, b;
+    std::array<std::size_t, 2> vertices;  // of a cut: the numbers of its vertices in the mesh
+  };
+  struct Text
+  {
+    P2 at;         // its centre
+    double size;   // its height
+    double angle;  // in degrees, clockwise on the page
+    std::string text;
+  };
+  struct Piece
+  {
+    std::size_t chart = 0, page = 0;
+    std::vector<std::array<P2, 4>> tabs;  // drawn under the piece
+    std::vector<Line> lines;              // cut and fold lines
+    std::vector<Text> labels;             // of the seam curves
+    Text id;                              // the chart id, at the centre of its box
+  };
+  std::string units;
+  double page_width = 0, page_height = 0, page_margin = 0;
+  std::size_t number_of_pages = 0;
+  double line_width = 0;  // of the cut lines
+  double font_size = 0;   // the largest label height
+  double millimetre = 1;  // in drawing units
+  std::vector<Piece> pieces;  // in drawing order
+};
+
+// computes the drawing of `write_patterns_SVG()` and `write_patterns_PDF()`
+// (see there); nothing is drawn unless the result's status is OK
+template <class TriangleMesh, class FaceChartMap, class EdgeRange, class NamedParameters>
+IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face_chart,
+                                const std::vector<std::array<double, 2>>& corner_uv, const EdgeRange& seam_edges,
+                                const IO::Pattern_options& options, const NamedParameters& np,
+                                Pattern_drawing& drawing)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef std::array<double, 2> P2;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+
+  IO::Pattern_result result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  if(nf == 0) {
+    result.status = Error_code::EMPTY_MESH;
+    return result;
+  }
+  const double mm_per_unit = IO::millimetres_per_unit(options.units);
+  auto finite_at_least = [](double x, double low) { return std::isfinite(x) && x >= low; };
+  bool valid = corner_uv.size() == 3 * nf && mm_per_unit > 0 && finite_at_least(options.scale, 0) &&
+               finite_at_least(options.model_size, 0) && finite_at_least(options.spacing, 0) &&
+               finite_at_least(options.tab_width, 0) && finite_at_least(options.page_margin, 0) &&
+               finite_at_least(options.font_size, 0) && std::isfinite(options.fold_angle) &&
+               std::isfinite(options.page_width) && std::isfinite(options.page_height) &&
+               options.page_width > 2 * options.page_margin && options.page_height > 2 * options.page_margin;
+  for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
+    valid = std::isfinite(corner_uv[i][0]) && std::isfinite(corner_uv[i][1]);
+  // the model's largest dimension
+  double extent = 0;
+  if(valid) {
+    std::array<double, 3> low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for(auto v : vertices(tm)) {
+      const std::array<double, 3> p = CGAL_QD::internal::point_of<TriangleMesh>(v, vpm);
+      for(int c = 0; c < 3; ++c) low[c] = (std::min)(low[c], p[c]), high[c] = (std::max)(high[c], p[c]);
+    }
+    for(int c = 0; c < 3; ++c) extent = (std::max)(extent, high[c] - low[c]);
+    valid = std::isfinite(extent) && extent > 0;
+  }
+  if(!valid) {
+    result.status = Error_code::INVALID_COORDINATES;
+    return result;
+  }
+  const double mm = 1 / mm_per_unit;  // drawing units per millimetre
+  const double font = options.font_size > 0 ? options.font_size : std::min(options.page_width, options.page_height) / 60;
+
+  std::vector<face_descriptor> face_of(nf);
+  std::vector<std::size_t> chart(nf);
+  std::size_t n = 0;
+  for(face_descriptor f : faces(tm)) {
+    face_of[get(fim, f)] = f;
+    chart[get(fim, f)] = static_cast<std::size_t>(get(face_chart, f));
+    n = (std::max)(n, chart[get(fim, f)] + 1);
+  }
+  std::vector<std::vector<std::size_t>> faces_of_chart(n);
+  for(std::size_t i = 0; i < nf; ++i) faces_of_chart[chart[i]].push_back(i);
+  std::vector<std::size_t> vertex_number(num_vertices(tm));
+  {
+    std::size_t k = 0;
+    for(auto v : vertices(tm)) vertex_number[get(vim, v)] = k++;
+  }
+  // corner of halfedge h in its face: the target of the k-th halfedge from halfedge(f)
+  auto corner = [&](halfedge_descriptor h) {
+    const face_descriptor f = face(h, tm);
+    const halfedge_descriptor h0 = halfedge(f, tm);
+    return 3 * get(fim, f) + (h == h0 ? 0 : (h == next(h0, tm) ? 1 : 2));
+  };
+  std::set<edge_descriptor> seam(seam_edges.begin(), seam_edges.end());
+  auto is_cut = [&](halfedge_descriptor h) {  // h is a halfedge of a face
+    return is_border(opposite(h, tm), tm) || seam.count(edge(h, tm)) > 0;
+  };
+
+  // ---- the scale, and every chart in its rectangle packed on pages
+  std::vector<internal::Rectangle> boxes(n);
+  std::vector<bool> used(n, false);
+  for(std::size_t k = 0; k < n; ++k) {
+    if(faces_of_chart[k].empty()) continue;
+    std::vector<K::Point_2> points;
+    for(std::size_t i : faces_of_chart[k])
+      for(int c = 0; c < 3; ++c) points.emplace_back(corner_uv[3 * i + c][0], corner_uv[3 * i + c][1]);
+    boxes[k] = internal::min_area_rectangle(points);
+    used[k] = true;
+  }
+  const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0);
+  if(options.scale > 0) {
+    result.scale = options.scale;
+  } else {
+    const double size = options.model_size > 0 ? options.model_size : 200 * mm;
+    result.scale = size / extent;
+    if(options.model_size == 0) {
+      const double fit = internal::largest_fitting_scale(boxes, options.page_width - 2 * options.page_margin,
+                                                         options.page_height - 2 * options.page_margin, pad);
+      if(fit < result.scale) {
+        // whole millimetres, where that leaves at least one
+        const double whole = std::floor(fit * extent * mm_per_unit);
+        result.scale = whole >= 1 ? whole * mm / extent : fit;
+        result.reduced_to_fit = true;
+      }
+    }
+    if(!(std::isfinite(result.scale) && result.scale > 0)) {
+      result.status = Error_code::INVALID_COORDINATES;
+      return result;
+    }
+  }
+  result.model_size = result.scale * extent;
+  const internal::Page_layout layout =
+      internal::lay_out_pieces(boxes, used, result.scale, options.page_width, options.page_height,
+                               options.page_margin, pad);
+  const std::vector<internal::Piece_placement>& place = layout.pieces;
+  result.number_of_pages = layout.number_of_pages;
+  result.number_of_charts = layout.order.size();
+  result.oversized_charts = layout.oversized;
+  // the drawing position of a corner: scaled, rotated, y pointing down (so the
+  // chart is seen from its outer side), placed on its page
+  auto to_page = [&](std::size_t c, const P2& uv) {
+    const internal::Piece_placement& p = place[chart[c / 3]];
+    const double co = std::cos(p.angle), si = std::sin(p.angle);
+    const double rx = co * uv[0] - si * uv[1] - p.low[0], ry = si * uv[0] + co * uv[1] - p.low[1];
+    const double h = p.size[1] - 2 * pad;
+    return P2{{p.at[0] + pad + result.scale * rx,
+               p.page * options.page_height + p.at[1] + pad + h - result.scale * ry}};
+  };
+  auto point_at = [&](std::size_t c) { return to_page(c, corner_uv[c]); };
+  // sizes that follow the pieces: a piece's smaller side, the lines' width
+  auto smaller_side = [&](std::size_t k) {
+    return (std::max)(0., (std::min)(place[k].size[0], place[k].size[1]) - 2 * pad);
+  };
+  double line = 0.25 * mm;
+  for(std::size_t k : layout.order) line = (std::min)(line, smaller_side(k) / 40);
+  if(!(line > 0)) line = 0.25 * mm;  // only pieces without area
+
+  // ---- seam curves: connected seam edges with the same pair of charts, in order along the curve
+  std::vector<halfedge_descriptor> seam_halfedges;
+  for(edge_descriptor e : seam)
+    if(!is_border_edge(halfedge(e, tm), tm)) seam_halfedges.push_back(halfedge(e, tm));
+  // a curve also ends where the two charts on its sides change
+  auto pair_of = [&](halfedge_descriptor h) {
+    const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
+    return std::make_pair((std::min)(a, b), (std::max)(a, b));
+  };
+  auto pair_changes = [&](vertex_descriptor v) {
+    std::set<std::pair<std::size_t, std::size_t>> pairs;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
+      if(seam.count(edge(h, tm)) && !is_border_edge(h, tm)) pairs.insert(pair_of(h));
+    return pairs.size() > 1;
+  };
+  std::vector<std::vector<halfedge_descriptor>> curves;
+  for(auto& c : internal::seam_curves(tm, seam_halfedges, vim, him, pair_changes)) curves.push_back(std::move(c.halfedges));
+  // the sides of every curve to label: the halfedge of the curve's middle edge (by 3D
+  // length) and its opposite, each in the face whose chart it labels
+  std::vector<std::vector<std::pair<halfedge_descriptor, std::size_t>>> labels_of_chart(n);
+  for(std::size_t id = 0; id < curves.size(); ++id) {
+    double total = 0;
+    std::vector<double> lengths;
+    for(halfedge_descriptor h : curves[id]) {
+      lengths.push_back(CGAL_QD::internal::distance3(CGAL_QD::internal::point_of<TriangleMesh>(source(h, tm), vpm),
+                                                     CGAL_QD::internal::point_of<TriangleMesh>(target(h, tm), vpm)));
+      total += lengths.back();
+    }
+    std::size_t middle = 0;
+    for(double run = lengths[0]; run < total / 2 && middle + 1 < lengths.size(); run += lengths[++middle]) {}
+    for(halfedge_descriptor h : {curves[id][middle], opposite(curves[id][middle], tm)})
+      labels_of_chart[chart[get(fim, face(h, tm))]].emplace_back(h, id);
+  }
+  result.seam_labels = curves.size();
+  std::vector<std::vector<halfedge_descriptor>> tabs_of_chart(n);
+  if(options.tabs)  // on the side of the halfedges stored in the curve
+    for(const auto& c : curves)
+      for(halfedge_descriptor h : c) tabs_of_chart[chart[get(fim, face(h, tm))]].push_back(h);
+  // ---- what is drawn, piece by piece
+  drawing.units = options.units;
+  drawing.page_width = options.page_width;
+  drawing.page_height = options.page_height;
+  drawing.page_margin = options.page_margin;
+  drawing.number_of_pages = result.number_of_pages;
+  drawing.line_width = line;
+  drawing.font_size = font;
+  drawing.millimetre = mm;
+  drawing.pieces.clear();
+  const double ph = options.page_height;
+  std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
+  for(std::size_t k : layout.order) {
+    const internal::Piece_placement& p = place[k];
+    const double side = smaller_side(k);
+    drawing.pieces.emplace_back();
+    Pattern_drawing::Piece& piece = drawing.pieces.back();
+    piece.chart = k;
+    piece.page = p.page;
+    // tabs first, under the piece
+    for(halfedge_descriptor h : tabs_of_chart[k]) {
+      const P2 a = point_at(corner(prev(h, tm))), b = point_at(corner(h));  // h runs from a to b
+      const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
+      if(!(l > 0)) continue;
+      // the page shows the chart as in UV (y is flipped into the page's downward axis), so the
+      // face stays on the visual left of a -> b; (nx, ny) points there, and the tab goes the other way
+      const double nx = dy / l, ny = -dx / l, tw = (std::min)(options.tab_width, 0.45 * l);
+      const P2 c1{{a[0] + 0.25 * dx - nx * tw, a[1] + 0.25 * dy - ny * tw}},
+          c2{{a[0] + 0.75 * dx - nx * tw, a[1] + 0.75 * dy - ny * tw}};
+      piece.tabs.push_back({{a, c1, c2, b}});
+      ++result.tabs;
+    }
+    // cut lines and fold lines
+    for(std::size_t i : faces_of_chart[k]) {
+      halfedge_descriptor h = halfedge(face_of[i], tm);
+      for(int c = 0; c < 3; ++c, h = next(h, tm)) {
+        // the edge of next(h) runs from corner c to corner c + 1
+        const halfedge_descriptor g = next(h, tm);
+        const P2 a = point_at(3 * i + c), b = point_at(3 * i + (c + 1) % 3);
+        if(is_cut(g)) {
+          piece.lines.push_back({Pattern_drawing::CUT, a, b,
+                                 {{vertex_number[get(vim, source(g, tm))], vertex_number[get(vim, target(g, tm))]}}});
+          ++result.cut_edges;
+          continue;
+        }
+        // an interior edge: draw it once, from the face with the smaller index
+        const std::size_t j = get(fim, face(opposite(g, tm), tm));
+        if(j < i) continue;
+        const internal::Face_geometry &fa = geo[i], &fb = geo[j];
+        const double cosine = fa.normal[0] * fb.normal[0] + fa.normal[1] * fb.normal[1] + fa.normal[2] * fb.normal[2];
+        if(std::acos((std::max)(-1., (std::min)(1., cosine))) <= options.fold_angle) continue;
+        const double above = (fb.centroid[0] - fa.centroid[0]) * fa.normal[0] +
+                             (fb.centroid[1] - fa.centroid[1]) * fa.normal[1] +
+                             (fb.centroid[2] - fa.centroid[2]) * fa.normal[2];
+        piece.lines.push_back({above > 0 ? Pattern_drawing::VALLEY : Pattern_drawing::MOUNTAIN, a, b, {{0, 0}}});
+        ++result.fold_lines;
+      }
+    }
+    // seam labels inside the piece, beside the middle edge of their curve
+    const double label = (std::min)(font, side / 4);
+    for(const auto& hl : labels_of_chart[k]) {
+      const halfedge_descriptor h = hl.first;
+      const P2 a = point_at(corner(prev(h, tm))), b = point_at(corner(h));
+      const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
+      // towards the face, (dy, -dx) / l as for the tabs, by 0.9 label heights
+      const double t = l > 0 ? 0.9 * label / l : 0.;
+      const P2 at{{(a[0] + b[0]) / 2 + t * dy, (a[1] + b[1]) / 2 - t * dx}};
+      const double angle = std::atan2(dy, dx) * 180 / 3.141592653589793;
+      const double upright = angle > 90 || angle < -90 ? angle + 180 : angle;
+      piece.labels.push_back({at, label, upright, seam_label(hl.second)});
+    }
+    // the chart id at the centre of its box
+    piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
+                (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_IO_INTERNAL_PATTERN_DRAWING_H

@@ -1,0 +1,89 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_IO_PATTERN_OPTIONS_H
+#define CGAL_QD_IO_PATTERN_OPTIONS_H
+
+/// \file IO/pattern_options.h
+/// What a printed pattern looks like (`Pattern_options`) and what was drawn
+/// (`Pattern_result`), for `write_patterns_SVG()` and `write_patterns_PDF()`.
+
+#include <CGAL_QD/Error_code.h>
+
+#include <cstddef>
+#include <string>
+
+namespace CGAL_QD {
+namespace IO {
+
+/// \ingroup PkgCGAL_QDRef
+/// millimetres per drawing unit for the units the pattern writers know
+/// (`mm`, `cm`, `in`, `pt`, `pc`, and `px`, the CSS pixel of 1/96 in); 0 for any other.
+inline double millimetres_per_unit(const std::string& units)
+{
+  if(units == "mm") return 1;
+  if(units == "cm") return 10;
+  if(units == "in") return 25.4;
+  if(units == "pt") return 25.4 / 72;
+  if(units == "pc") return 25.4 / 6;
+  if(units == "px") return 25.4 / 96;
+  return 0;
+}
+
+/// \ingroup PkgCGAL_QDRef
+/// options of `write_patterns_SVG()` and `write_patterns_PDF()`. Every length is in drawing units
+/// (`units`); the defaults are for millimetres.
+struct Pattern_options
+{
+  /// drawing units per mesh unit; 0 (the default): chosen from `model_size`
+  double scale = 0;
+  /// with `scale` 0, the model's largest dimension (the longest side of its
+  /// axis-aligned bounding box) on paper; 0 (the default): 200 mm, made smaller
+  /// (to whole millimetres) where a piece would not fit on a page at that size
+  double model_size = 0;
+  /// the unit of the drawing (the SVG's width and height are in it): `mm`, `cm`, `in`, `pt`, `pc` or `px`
+  std::string units = "mm";
+  /// the page (default A4 portrait in mm)
+  double page_width = 210, page_height = 297;
+  /// free border of every page, and space between pieces
+  double page_margin = 10, spacing = 6;
+  /// draw a glue tab on one side of every seam
+  bool tabs = false;
+  /// the width of the tabs
+  double tab_width = 5;
+  /// interior edges whose dihedral angle exceeds this (radians) are fold lines
+  double fold_angle = 0.1745329251994330;  // 10 degrees
+  /// the largest height of the label text (0: from the page size); a piece's
+  /// labels are made smaller where the piece is small
+  double font_size = 0;
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// what `write_patterns_SVG()` or `write_patterns_PDF()` drew.
+struct Pattern_result
+{
+  Error_code status = Error_code::OK;
+  /// the scale used, in drawing units per mesh unit
+  double scale = 0;
+  /// the model's largest dimension (its longest bounding-box side) on paper, in drawing units
+  double model_size = 0;
+  /// whether the scale was chosen (`Pattern_options::scale` 0) and made smaller
+  /// than the one of the default model size, so that every piece fits on a page
+  bool reduced_to_fit = false;
+  std::size_t number_of_pages = 0;
+  std::size_t number_of_charts = 0;
+  /// charts larger than a page (after turning them): each gets pages of its own and overflows their frames
+  std::size_t oversized_charts = 0;
+  std::size_t cut_edges = 0;    ///< edges on the charts' borders, each drawn once per side
+  std::size_t seam_labels = 0;  ///< labels of seam curves, each drawn on both sides
+  std::size_t fold_lines = 0;
+  std::size_t tabs = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+
+} // namespace IO
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_IO_PATTERN_OPTIONS_H

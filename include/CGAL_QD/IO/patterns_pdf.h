@@ -1,0 +1,166 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_IO_PATTERNS_PDF_H
+#define CGAL_QD_IO_PATTERNS_PDF_H
+
+/// \file IO/patterns_pdf.h
+/// Printable sewing and folding patterns as PDF, one page per sheet, at true
+/// scale, drawn with cairo. Including this header needs cairo (Debian's
+/// `libcairo2-dev`; compile and link with `pkg-config --cflags --libs cairo`).
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/IO/internal/pattern_drawing.h>
+#include <CGAL_QD/IO/pattern_options.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cairo-pdf.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// cairo's output, into a stream
+inline cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length)
+{
+  std::ostream& out = *static_cast<std::ostream*>(closure);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(length));
+  return out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+// `text` centred on its point, turned by its angle
+inline void show_centred_text(cairo_t* cr, const Pattern_drawing::Text& text)
+{
+  cairo_save(cr);
+  cairo_translate(cr, text.at[0], text.at[1]);
+  cairo_rotate(cr, text.angle * 3.141592653589793 / 180);
+  cairo_set_font_size(cr, text.size);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.text.c_str(), &e);
+  cairo_move_to(cr, -e.x_bearing - e.width / 2, -e.y_bearing - e.height / 2);
+  cairo_show_text(cr, text.text.c_str());
+  cairo_restore(cr);
+}
+
+// every line of `kind` of a piece, as one path
+inline void stroke_lines(cairo_t* cr, const Pattern_drawing::Piece& piece, Pattern_drawing::Line_kind kind)
+{
+  bool any = false;
+  for(const Pattern_drawing::Line& l : piece.lines)
+    if(l.kind == kind) {
+      cairo_move_to(cr, l.a[0], l.a[1]);
+      cairo_line_to(cr, l.b[0], l.b[1]);
+      any = true;
+    }
+  if(any) cairo_stroke(cr);
+}
+
+} // namespace internal
+
+namespace IO {
+
+/// \ingroup PkgCGAL_QDRef
+/// writes the flattened charts as a printable PDF pattern at true scale: the
+/// same pattern as `write_patterns_SVG()` (same scale, layout, cut lines, fold
+/// lines, tabs and labels; see there), one PDF page per page of
+/// `options.page_width` x `options.page_height`, so that a length of 100 mm on
+/// the pattern prints as 100 mm with the printer's scaling off ("actual
+/// size"). A piece larger than a page continues on the pages after its first,
+/// as it overflows its frame in the SVG.
+///
+/// \param out the stream written to (binary)
+/// \param tm the triangle mesh
+/// \param face_chart the chart id of every face
+/// \param corner_uv 3 UVs per face by face index, in mesh units and with each chart's
+///        border at its true length (`Segmentation_result::corner_uv`)
+/// \param seam_edges the edges where the surface is cut (`Segmentation_result::seam_edges`)
+/// \param options the drawing options
+/// \param np optional: `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
+/// \returns a `Pattern_result`, with the statuses of `write_patterns_SVG()` on invalid input
+///          (nothing is written then), and `CANNOT_WRITE` if cairo or the stream fails.
+template <class TriangleMesh, class FaceChartMap, class EdgeRange,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, const FaceChartMap& face_chart,
+                                  const std::vector<std::array<double, 2>>& corner_uv, const EdgeRange& seam_edges,
+                                  const Pattern_options& options = Pattern_options(),
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef internal::Pattern_drawing Drawing;
+  Drawing d;
+  Pattern_result result = internal::draw_pattern(tm, face_chart, corner_uv, seam_edges, options, np, d);
+  if(!result) return result;
+  const double points = 72 / 25.4 * millimetres_per_unit(d.units);  // per drawing unit
+  const double w = d.page_width, ph = d.page_height, line = d.line_width, font = d.font_size;
+  cairo_surface_t* surface =
+      cairo_pdf_surface_create_for_stream(internal::write_to_stream, &out, w * points, ph * points);
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "CGAL_QD pattern");
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "CGAL_QD");
+  cairo_t* cr = cairo_create(surface);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const double mountain[4] = {12 * line, 4 * line, 2 * line, 4 * line}, valley[2] = {8 * line, 4 * line};
+  for(std::size_t page = 0; page < d.number_of_pages; ++page) {
+    cairo_save(cr);
+    cairo_scale(cr, points, points);
+    cairo_translate(cr, 0, -double(page) * ph);
+    // the page number, light, in the bottom margin
+    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+    internal::show_centred_text(cr, {{{w / 2, page * ph + ph - d.page_margin / 2}},
+                                     (std::min)(font * 0.8, 0.8 * d.page_margin), 0.,
+                                     "page " + std::to_string(page + 1) + " of " + std::to_string(d.number_of_pages)});
+    for(const Drawing::Piece& piece : d.pieces) {
+      // a piece is drawn on every page it reaches: its own, and the next ones when it is larger than a page
+      double top = piece.id.at[1], bottom = piece.id.at[1];
+      for(const Drawing::Line& l : piece.lines)
+        top = (std::min)({top, l.a[1], l.b[1]}), bottom = (std::max)({bottom, l.a[1], l.b[1]});
+      for(const auto& t : piece.tabs)
+        for(const auto& p : t) top = (std::min)(top, p[1]), bottom = (std::max)(bottom, p[1]);
+      if(bottom < page * ph || top > (page + 1) * ph) continue;
+      cairo_set_line_width(cr, 0.6 * line);
+      for(const auto& t : piece.tabs) {
+        cairo_move_to(cr, t[0][0], t[0][1]);
+        for(int c = 1; c < 4; ++c) cairo_line_to(cr, t[c][0], t[c][1]);
+        cairo_close_path(cr);
+        cairo_set_source_rgb(cr, 0.933, 0.933, 0.933);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 0.467, 0.467, 0.467);
+        cairo_stroke(cr);
+      }
+      cairo_set_line_width(cr, 0.8 * line);
+      cairo_set_source_rgb(cr, 0.8, 0, 0);
+      cairo_set_dash(cr, mountain, 4, 0);
+      internal::stroke_lines(cr, piece, Drawing::MOUNTAIN);
+      cairo_set_source_rgb(cr, 0, 0, 0.8);
+      cairo_set_dash(cr, valley, 2, 0);
+      internal::stroke_lines(cr, piece, Drawing::VALLEY);
+      cairo_set_dash(cr, nullptr, 0, 0);
+      cairo_set_line_width(cr, line);
+      cairo_set_source_rgb(cr, 0, 0, 0);
+      internal::stroke_lines(cr, piece, Drawing::CUT);
+      for(const Drawing::Text& t : piece.labels) internal::show_centred_text(cr, t);
+      cairo_set_source_rgb(cr, 0.533, 0.533, 0.533);
+      internal::show_centred_text(cr, piece.id);
+    }
+    cairo_restore(cr);
+    cairo_show_page(cr);
+  }
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  const bool ok = cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS;
+  cairo_surface_destroy(surface);
+  if(!ok || !out) result.status = Error_code::CANNOT_WRITE;
+  return result;
+}
+
+} // namespace IO
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_IO_PATTERNS_PDF_H
