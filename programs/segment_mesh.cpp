@@ -154,6 +154,7 @@ int main(int argc, char** argv)
   pattern.units = o.units;
   pattern.scale = o.scale;
   pattern.tabs = o.tabs;
+  pattern.assembly_page = o.assembly_page;
   const double mm_per_unit = CGAL_QD::IO::millimetres_per_unit(pattern.units);
   double page_mm[2] = {210, 297};
   segment_mesh::page_size(o.page, page_mm[0], page_mm[1]);
@@ -299,6 +300,15 @@ int main(int argc, char** argv)
     if(pages.oversized_charts > 0)
       message << ", " << pages.oversized_charts << (pages.oversized_charts == 1 ? " piece" : " pieces") << " larger than a page";
     message << "), segmentation.svg and report.json into " << dir.string() << "\n";
+    // the order in which to join the pieces, as on the pattern's last page
+    for(std::size_t i = 0; i < pages.assembly.size(); ++i) {
+      const CGAL_QD::IO::Assembly_step& step = pages.assembly[i];
+      message << (i == 0 ? "  assembly       " : "                 ") << i + 1 << ". piece " << step.piece;
+      if(i == 0) message << " (the largest)";
+      if(step.onto != step.piece) message << " onto piece " << step.onto;
+      for(std::size_t k = 0; k < step.seams.size(); ++k) message << (k == 0 ? ": " : ", ") << step.seams[k];
+      message << "\n";
+    }
     written = message.str();
   }
   if(o.json) {

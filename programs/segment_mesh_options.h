@@ -31,6 +31,7 @@ struct Options
   std::string units = "mm";
   std::string page = "a4";
   bool tabs = false;
+  bool assembly_page = true;
   // the segmentation
   double vsa_tolerance = 0.25;
   double max_area_distortion = 0.10;
@@ -118,6 +119,9 @@ inline void add_options(CLI::App& app, Options& o)
       ->check(CLI::IsMember({"a4", "a3", "letter"}))
       ->group(pattern);
   app.add_flag("--tabs", o.tabs, "Draw a 5 mm glue tab on one side of every seam")->group(pattern);
+  app.add_flag("!--no-assembly-page", o.assembly_page,
+               "Leave out the last page, which lists the order in which to join the pieces")
+      ->group(pattern);
 
   const char* segmentation = "Segmentation";
   app.add_option("--vsa-tolerance", o.vsa_tolerance,

@@ -115,6 +115,13 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"reduced_to_fit", p.reduced_to_fit},
                      {"oversized_pieces", p.oversized_charts},
                      {"pdf", patterns.pdf}};
+    Json steps = Json::array();
+    for(std::size_t i = 0; i < p.assembly.size(); ++i)
+      steps.push_back({{"step", i + 1},
+                       {"piece", p.assembly[i].piece},
+                       {"onto", p.assembly[i].onto},
+                       {"seams", p.assembly[i].seams}});
+    j["assembly"] = std::move(steps);
   }
   Json charts = Json::array();
   for(std::size_t k = 0; k < r.charts.size(); ++k) {

@@ -15,7 +15,7 @@ trap 'rm -rf "$tmp"' EXIT
 "$program" "$meshes/elephant.off" --out-dir "$tmp/elephant" --quiet > /dev/null
 "$program" "$meshes/bunny00.off" --out-dir "$tmp/bunny00" --quiet > /dev/null
 "$program" "$meshes/fandisk.off" --out-dir "$tmp/fandisk" --scale 80 --tabs --quiet > /dev/null
-"$program" "$meshes/cube_quad.off" --out-dir "$tmp/cube" --scale 25 --tabs --quiet > /dev/null
+"$program" "$meshes/cube_quad.off" --out-dir "$tmp/cube" --scale 25 --tabs --no-assembly-page --quiet > /dev/null
 cp "$tmp/elephant/segmentation.svg" doc/figures/elephant_segmentation.svg
 cp "$tmp/bunny00/segmentation.svg" doc/figures/bunny00_segmentation.svg
 cp "$tmp/fandisk/patterns.svg" doc/figures/fandisk_patterns.svg

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
@@ -447,6 +448,81 @@ BOOST_AUTO_TEST_CASE(patterns_take_a_model_size_and_units)
   if(!pr.reduced_to_fit) BOOST_TEST(pr.model_size == 200 / 25.4, tt::tolerance(1e-12));
   BOOST_TEST(ss.str().find("width=\"8.5000in\"") != std::string::npos);
   expect_pieces_apart_within_margins(parse_pattern(ss, s.tm, pr.scale, pr.number_of_pages), options.page_margin);
+}
+
+// the order in which to join the pieces: outward from the largest, every piece
+// once, every seam sewn once, listed on a last page of its own
+BOOST_AUTO_TEST_CASE(patterns_list_the_assembly_order)
+{
+  for(const Segmented& s : meshes()) {
+    const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+    QD::IO::Pattern_options options;
+    options.scale = 100;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr =
+        QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+    BOOST_REQUIRE(pr);
+    BOOST_REQUIRE(pr.assembly.size() == s.result.number_of_charts);
+    std::vector<double> area(s.result.number_of_charts, 0.);
+    for(auto f : faces(s.tm)) area[s.chart.at(f)] += CGAL::Polygon_mesh_processing::face_area(f, s.tm);
+    const std::size_t largest = std::max_element(area.begin(), area.end()) - area.begin();
+    BOOST_TEST(pr.assembly.front().piece == largest);
+    BOOST_TEST(pr.assembly.front().onto == largest);
+    std::set<std::size_t> joined;
+    std::map<std::string, int> sewn;
+    for(const QD::IO::Assembly_step& step : pr.assembly) {
+      BOOST_TEST(joined.insert(step.piece).second);  // once
+      if(step.onto != step.piece) BOOST_TEST(joined.count(step.onto) == 1u);  // onto a piece joined before
+      for(const std::string& label : step.seams) ++sewn[label];
+    }
+    const Drawn_pattern d = parse_pattern(ss, s.tm, options.scale, pr.number_of_pages);
+    BOOST_TEST(sewn.size() == d.labels.size());
+    for(const auto& l : d.labels) BOOST_TEST(sewn[l.first] == 1, "seam " << l.first << " sewn " << sewn[l.first] << " times");
+    // the list on the last page, where no piece is
+    boost::property_tree::ptree tree;
+    ss.clear();
+    ss.seekg(0);
+    boost::property_tree::read_xml(ss, tree);
+    std::size_t lines = 0;
+    for(const auto& node : tree.get_child("svg"))
+      if(node.first == "text" && node.second.get<std::string>("<xmlattr>.class", "") == "assembly") {
+        ++lines;
+        BOOST_TEST(node.second.get<double>("<xmlattr>.y") > (pr.number_of_pages - 1) * d.page_height);
+      }
+    BOOST_TEST(lines > pr.assembly.size());  // a title and a line per step at least
+    for(const Drawn_piece& piece : d.pieces) BOOST_TEST(piece.page + 1 < pr.number_of_pages);
+    // without the page: the same pieces, one page fewer
+    options.assembly_page = false;
+    std::stringstream without;
+    const QD::IO::Pattern_result pw =
+        QD::IO::write_patterns_SVG(without, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+    BOOST_TEST(pw.number_of_pages + 1 == pr.number_of_pages);
+    BOOST_TEST(without.str().find("class=\"assembly\"") == std::string::npos);
+  }
+}
+
+// two parts of a model, each built outward from its largest piece; a cut
+// inside a piece is sewn when the piece is joined
+BOOST_AUTO_TEST_CASE(assembly_order_follows_the_longest_seams)
+{
+  // pieces 0-1-2 in a row (1 the largest), 3-4 apart (4 the larger), 5 unused;
+  // curve 3 is a cut inside piece 2
+  const std::vector<double> area = {2, 5, 1, 0.5, 1.5, 9};
+  const std::vector<bool> used = {true, true, true, true, true, false};
+  const std::vector<std::pair<std::size_t, std::size_t>> charts = {{0, 1}, {1, 2}, {0, 1}, {2, 2}, {3, 4}, {0, 2}};
+  const std::vector<double> length = {1, 3, 1.5, 0.5, 1, 0.2};
+  const std::vector<QD::IO::Assembly_step> steps = QD::internal::assembly_order(area, used, charts, length);
+  BOOST_REQUIRE(steps.size() == 5u);
+  BOOST_TEST(steps[0].piece == 1u);
+  BOOST_TEST(steps[1].piece == 2u);  // 3 shared with 1, more than 0's 2.5
+  BOOST_TEST(steps[1].onto == 1u);
+  BOOST_TEST((steps[1].seams == std::vector<std::string>{"B", "D"}));
+  BOOST_TEST(steps[2].piece == 0u);
+  BOOST_TEST((steps[2].seams == std::vector<std::string>{"A", "C", "F"}));
+  BOOST_TEST(steps[3].piece == 4u);  // the other part, from its larger piece
+  BOOST_TEST(steps[3].onto == 4u);
+  BOOST_TEST(steps[4].piece == 3u);
+  BOOST_TEST((steps[4].seams == std::vector<std::string>{"E"}));
 }
 
 BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)

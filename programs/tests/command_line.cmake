@@ -17,7 +17,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
@@ -108,6 +108,17 @@ else()
     string(APPEND failures "report.json: model_size '${size}' for --size 15cm\n")
   endif()
   string(JSON pdf GET "${report}" patterns pdf)
+  # the assembly: every piece joined once, the first one onto itself
+  string(JSON charts GET "${report}" charts)
+  string(JSON steps LENGTH "${report}" assembly)
+  string(JSON first GET "${report}" assembly 0 piece)
+  string(JSON first_onto GET "${report}" assembly 0 onto)
+  if(NOT steps EQUAL charts OR NOT first EQUAL first_onto)
+    string(APPEND failures "report.json: ${steps} assembly steps for ${charts} pieces\n")
+  endif()
+  if(NOT summary MATCHES "assembly       1\\. piece [0-9]+ \\(the largest\\)")
+    string(APPEND failures "the summary has no assembly order: ${summary}\n")
+  endif()
   file(GLOB written RELATIVE "${WORK_DIR}/out" "${WORK_DIR}/out/*" "${WORK_DIR}/out/.*")
   list(SORT written)
   set(expected "atlas.mtl;atlas.obj;charts.ply;patterns.svg;report.json;segmentation.svg")

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace CGAL_QD {
 namespace IO {
@@ -56,6 +57,21 @@ struct Pattern_options
   /// the largest height of the label text (0: from the page size); a piece's
   /// labels are made smaller where the piece is small
   double font_size = 0;
+  /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
+  bool assembly_page = true;
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// one step of the assembly of the pieces (`Pattern_result::assembly`).
+struct Assembly_step
+{
+  std::size_t piece = 0;  ///< the piece joined at this step
+  /// the piece it is joined to, the one with which it shares the longest seams; `piece` itself for the
+  /// first piece of the model, or of a part of it that no seam joins to the rest
+  std::size_t onto = 0;
+  /// the labels of the seams sewn or glued at this step: those between `piece` and the pieces joined
+  /// before, and the cuts inside `piece`, in label order
+  std::vector<std::string> seams;
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -78,6 +94,9 @@ struct Pattern_result
   std::size_t seam_labels = 0;  ///< labels of seam curves, each drawn on both sides
   std::size_t fold_lines = 0;
   std::size_t tabs = 0;
+  /// the order in which to join the pieces, built outward from the largest (by 3D area): each step
+  /// joins the piece that shares the longest seams with those joined before
+  std::vector<Assembly_step> assembly;
 
   explicit operator bool() const { return status == Error_code::OK; }
 };

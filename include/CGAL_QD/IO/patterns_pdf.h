@@ -35,7 +35,7 @@ inline cairo_status_t write_to_stream(void* closure, const unsigned char* data, 
   return out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
-// `text` centred on its point, turned by its angle
+// `text` centred on its point (or starting there), turned by its angle
 inline void show_centred_text(cairo_t* cr, const Pattern_drawing::Text& text)
 {
   cairo_save(cr);
@@ -44,7 +44,7 @@ inline void show_centred_text(cairo_t* cr, const Pattern_drawing::Text& text)
   cairo_set_font_size(cr, text.size);
   cairo_text_extents_t e;
   cairo_text_extents(cr, text.text.c_str(), &e);
-  cairo_move_to(cr, -e.x_bearing - e.width / 2, -e.y_bearing - e.height / 2);
+  cairo_move_to(cr, text.centred ? -e.x_bearing - e.width / 2 : 0., -e.y_bearing - e.height / 2);
   cairo_show_text(cr, text.text.c_str());
   cairo_restore(cr);
 }
@@ -149,6 +149,9 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
       cairo_set_source_rgb(cr, 0.533, 0.533, 0.533);
       internal::show_centred_text(cr, piece.id);
     }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    for(const Drawing::Text& t : d.assembly)
+      if(t.at[1] >= page * ph && t.at[1] < (page + 1) * ph) internal::show_centred_text(cr, t);
     cairo_restore(cr);
     cairo_show_page(cr);
   }

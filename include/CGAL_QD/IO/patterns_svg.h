@@ -72,6 +72,10 @@ namespace IO {
 ///   mountain folds (convex edges) dash-dotted in red, valley folds (concave)
 ///   dashed in blue;
 /// - the chart id at the centre of the chart's box;
+/// - unless `options.assembly_page` is false, a last page lists the order in
+///   which to join the pieces (`Pattern_result::assembly`): outward from the
+///   largest piece (by 3D area), each step the piece that shares the longest
+///   seams with those joined before, and the labels of the seams it closes;
 /// - labels at most `font_size` high and at most a quarter (seams) or a third
 ///   (chart ids) of the piece's smaller side; lines at most 0.25 mm wide and
 ///   at most 1/40 of the smallest piece's smaller side.
@@ -110,7 +114,8 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       << n_(4 * line) << "}.valley{stroke:#00c;stroke-width:" << n_(0.8 * line) << ";stroke-dasharray:"
       << n_(8 * line) << ' ' << n_(4 * line) << "}.tab{fill:#eee;stroke:#777;stroke-width:" << n_(0.6 * line)
       << "}.page{fill:none;stroke:#ccc;stroke-width:" << n_(0.3 * mm) << "}"
-      << "text{font-family:sans-serif;text-anchor:middle;dominant-baseline:middle}</style>\n";
+      << "text{font-family:sans-serif;text-anchor:middle;dominant-baseline:middle}"
+      << (d.assembly.empty() ? "" : "text.assembly{text-anchor:start}") << "</style>\n";
   for(std::size_t p = 0; p < d.number_of_pages; ++p)
     out << "<rect class=\"page\" x=\"0\" y=\"" << n_(p * ph) << "\" width=\"" << n_(w) << "\" height=\"" << n_(ph)
         << "\"/>\n<text class=\"page\" x=\"" << n_(w / 2) << "\" y=\"" << n_(p * ph + ph - d.page_margin / 2)
@@ -138,6 +143,10 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
     out << "<text class=\"chart\" x=\"" << n_(piece.id.at[0]) << "\" y=\"" << n_(piece.id.at[1])
         << "\" font-size=\"" << n_(piece.id.size) << "\" fill=\"#888\">" << piece.id.text << "</text>\n</g>\n";
   }
+  // the assembly order, on the last page
+  for(const internal::Pattern_drawing::Text& t : d.assembly)
+    out << "<text class=\"assembly\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
+        << n_(t.size) << "\">" << t.text << "</text>\n";
   out << "</svg>\n";
   if(!out) result.status = Error_code::CANNOT_WRITE;
   return result;

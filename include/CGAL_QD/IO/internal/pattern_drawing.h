@@ -11,6 +11,7 @@
 // IO/patterns_pdf.h write it.
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/IO/internal/assembly_order.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
 #include <CGAL_QD/IO/pattern_options.h>
 #include <CGAL_QD/internal/charts.h>
@@ -39,14 +40,6 @@
 namespace CGAL_QD {
 namespace internal {
 
-// seam label of index k: A..Z, then A1..Z1, ...
-inline std::string seam_label(std::size_t k)
-{
-  std::string s(1, char('A' + k % 26));
-  if(k >= 26) s += std::to_string(k / 26);
-  return s;
-}
-
 struct Pattern_drawing
 {
   typedef std::array<double, 2> P2;
@@ -63,6 +56,7 @@ struct Pattern_drawing
     double size;   // its height
     double angle;  // in degrees, clockwise on the page
     std::string text;
+    bool centred = true;  // or starting at `at`, centred in height
   };
   struct Piece
   {
@@ -79,7 +73,58 @@ struct Pattern_drawing
   double font_size = 0;   // the largest label height
   double millimetre = 1;  // in drawing units
   std::vector<Piece> pieces;  // in drawing order
+  std::vector<Text> assembly;  // the lines of the assembly page
 };
+
+// the lines of the assembly page, `page` of `d`, in columns, made smaller
+// until they fit
+inline void lay_out_assembly_page(const std::vector<IO::Assembly_step>& steps, std::size_t page, Pattern_drawing& d)
+{
+  std::vector<std::string> steps_text;
+  for(std::size_t i = 0; i < steps.size(); ++i) {
+    std::string t = std::to_string(i + 1) + ". piece " + std::to_string(steps[i].piece);
+    if(i == 0) t += " (the largest)";
+    if(steps[i].onto != steps[i].piece) t += " onto piece " + std::to_string(steps[i].onto);
+    for(std::size_t k = 0; k < steps[i].seams.size(); ++k) t += (k == 0 ? ": " : ", ") + steps[i].seams[k];
+    steps_text.push_back(t);
+  }
+  const double m = d.page_margin, title = 1.2 * d.font_size, top = d.page_height * page + m + 2 * title;
+  const double width = d.page_width - 2 * m, height = d.page_height - 2 * m - 2 * title;
+  // a step longer than its column goes on, indented, after a comma
+  auto wrap = [&](std::size_t max_chars) {
+    std::vector<std::pair<bool, std::string>> lines;  // (goes on, text)
+    for(std::string t : steps_text) {
+      bool goes_on = false;
+      while(t.size() > max_chars) {
+        const std::size_t cut = t.rfind(", ", max_chars - 1);
+        if(cut == std::string::npos || cut < 8) break;
+        lines.emplace_back(goes_on, t.substr(0, cut + 1));
+        t = t.substr(cut + 2);
+        goes_on = true;
+      }
+      lines.emplace_back(goes_on, t);
+    }
+    return lines;
+  };
+  double size = d.font_size;
+  std::vector<std::pair<bool, std::string>> lines;
+  std::size_t columns = 1, rows = 1;
+  for(int tries = 0; tries < 30; ++tries, size *= 0.9) {
+    rows = (std::max)(std::size_t(1), static_cast<std::size_t>(height / (1.5 * size)));
+    for(columns = 1; columns <= 3; ++columns) {
+      lines = wrap((std::max)(std::size_t(12), static_cast<std::size_t>(width / columns / (0.6 * size)) - 4));
+      if(lines.size() <= columns * rows) break;
+    }
+    if(columns <= 3) break;
+    columns = 3;
+  }
+  d.assembly.push_back({{{m, d.page_height * page + m + title}}, title, 0.,
+                        "Assembly: join the pieces in this order, sewing or gluing the seams named", false});
+  for(std::size_t i = 0; i < lines.size(); ++i)
+    d.assembly.push_back({{{m + (i / rows) * width / columns + (lines[i].first ? 3 * size : 0.),
+                            top + (i % rows + 0.5) * 1.5 * size}},
+                          size, 0., lines[i].second, false});
+}
 
 // computes the drawing of `write_patterns_SVG()` and `write_patterns_PDF()`
 // (see there); nothing is drawn unless the result's status is OK
@@ -245,7 +290,10 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   // the sides of every curve to label: the halfedge of the curve's middle edge (by 3D
   // length) and its opposite, each in the face whose chart it labels
   std::vector<std::vector<std::pair<halfedge_descriptor, std::size_t>>> labels_of_chart(n);
+  std::vector<std::pair<std::size_t, std::size_t>> curve_charts(curves.size());
+  std::vector<double> curve_length(curves.size(), 0.);
   for(std::size_t id = 0; id < curves.size(); ++id) {
+    curve_charts[id] = pair_of(curves[id].front());
     double total = 0;
     std::vector<double> lengths;
     for(halfedge_descriptor h : curves[id]) {
@@ -257,8 +305,15 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     for(double run = lengths[0]; run < total / 2 && middle + 1 < lengths.size(); run += lengths[++middle]) {}
     for(halfedge_descriptor h : {curves[id][middle], opposite(curves[id][middle], tm)})
       labels_of_chart[chart[get(fim, face(h, tm))]].emplace_back(h, id);
+    curve_length[id] = total;
   }
   result.seam_labels = curves.size();
+  const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
+  {
+    std::vector<double> area(n, 0.);
+    for(std::size_t i = 0; i < nf; ++i) area[chart[i]] += geo[i].area;
+    result.assembly = assembly_order(area, used, curve_charts, curve_length);
+  }
   std::vector<std::vector<halfedge_descriptor>> tabs_of_chart(n);
   if(options.tabs)  // on the side of the halfedges stored in the curve
     for(const auto& c : curves)
@@ -273,8 +328,12 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.font_size = font;
   drawing.millimetre = mm;
   drawing.pieces.clear();
+  drawing.assembly.clear();
+  if(options.assembly_page && !result.assembly.empty()) {
+    lay_out_assembly_page(result.assembly, result.number_of_pages, drawing);
+    drawing.number_of_pages = ++result.number_of_pages;
+  }
   const double ph = options.page_height;
-  std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
   for(std::size_t k : layout.order) {
     const internal::Piece_placement& p = place[k];
     const double side = smaller_side(k);
