@@ -163,16 +163,18 @@ int main(int argc, char** argv)
   pattern.page_margin /= mm_per_unit;
   pattern.spacing /= mm_per_unit;
   pattern.tab_width /= mm_per_unit;
-  if(!o.size.empty()) {
-    // a length with its unit (200mm, 20cm, 8in), or a number in the drawing's units
+  // a length with its unit (200mm, 20cm, 8in), or a number in the drawing's units; 0 if it is not one
+  auto length = [&](const std::string& text) {
     char* end = nullptr;
-    const double value = std::strtod(o.size.c_str(), &end);
-    const std::string unit = end == o.size.c_str() ? std::string() : std::string(end);
+    const double value = std::strtod(text.c_str(), &end);
+    const std::string unit = end == text.c_str() ? std::string() : std::string(end);
     const double factor = unit.empty() ? 1. : CGAL_QD::IO::millimetres_per_unit(unit) / mm_per_unit;
-    if(end == o.size.c_str() || !(factor > 0) || !std::isfinite(value) || !(value > 0))
-      return fail("--size: '" + o.size + "' is not a positive length such as 200mm, 20cm or 8in");
-    pattern.model_size = value * factor;
-  }
+    return end == text.c_str() || !(factor > 0) || !std::isfinite(value) || !(value > 0) ? 0. : value * factor;
+  };
+  if(!o.size.empty() && !((pattern.model_size = length(o.size)) > 0))
+    return fail("--size: '" + o.size + "' is not a positive length such as 200mm, 20cm or 8in");
+  if(!o.notches.empty() && !((pattern.notch_spacing = length(o.notches)) > 0))
+    return fail("--notches: '" + o.notches + "' is not a positive length such as 50mm or 2in");
 
   // reading and repairs in one place: say what was repaired, or what is wrong
   Mesh mesh;
@@ -297,6 +299,7 @@ int main(int argc, char** argv)
       message << ", less than " << segment_mesh::text(200 / mm_per_unit) << ' ' << pattern.units
               << " so that every piece fits on a page";
     if(pattern.scale == 0 && pattern.model_size == 0) message << "; --size or --scale to change";
+    if(pages.notches > 0) message << ", " << pages.notches << " notches";
     if(pages.oversized_charts > 0)
       message << ", " << pages.oversized_charts << (pages.oversized_charts == 1 ? " piece" : " pieces") << " larger than a page";
     message << "), segmentation.svg and report.json into " << dir.string() << "\n";

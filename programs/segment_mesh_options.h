@@ -32,6 +32,7 @@ struct Options
   std::string page = "a4";
   bool tabs = false;
   bool assembly_page = true;
+  std::string notches;  // the spacing of the notches, a length with its unit
   // the segmentation
   double vsa_tolerance = 0.25;
   double max_area_distortion = 0.10;
@@ -119,6 +120,11 @@ inline void add_options(CLI::App& app, Options& o)
       ->check(CLI::IsMember({"a4", "a3", "letter"}))
       ->group(pattern);
   app.add_flag("--tabs", o.tabs, "Draw a 5 mm glue tab on one side of every seam")->group(pattern);
+  app.add_option("--notches", o.notches,
+                 "Notches along every seam, about LENGTH apart (50mm, 2in; a bare number is in --units): the same "
+                 "number on both sides of a seam, numbered, where the two sides meet. Default: none")
+      ->type_name("LENGTH")
+      ->group(pattern);
   app.add_flag("!--no-assembly-page", o.assembly_page,
                "Leave out the last page, which lists the order in which to join the pieces")
       ->group(pattern);

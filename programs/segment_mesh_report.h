@@ -114,6 +114,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"model_size", number(p.model_size)},
                      {"reduced_to_fit", p.reduced_to_fit},
                      {"oversized_pieces", p.oversized_charts},
+                     {"notches", p.notches},
                      {"pdf", patterns.pdf}};
     Json steps = Json::array();
     for(std::size_t i = 0; i < p.assembly.size(); ++i)

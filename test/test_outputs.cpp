@@ -525,6 +525,62 @@ BOOST_AUTO_TEST_CASE(assembly_order_follows_the_longest_seams)
   BOOST_TEST((steps[4].seams == std::vector<std::string>{"E"}));
 }
 
+// notches: the same count on the two sides of every seam curve, numbered from
+// 1, each starting on a cut line of its piece
+BOOST_AUTO_TEST_CASE(pattern_notches_match_on_both_sides_of_every_seam)
+{
+  for(const Segmented& s : meshes()) {
+    const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+    QD::IO::Pattern_options options;
+    options.scale = 100;
+    options.notch_spacing = 20;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr =
+        QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+    BOOST_REQUIRE(pr);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_xml(ss, tree);
+    std::map<std::pair<std::string, int>, int> sides;  // (seam, number) -> notches drawn
+    std::map<std::string, int> largest;                 // seam -> its largest notch number
+    std::size_t notches = 0;
+    for(const auto& group : tree.get_child("svg")) {
+      if(group.first != "g") continue;
+      std::vector<std::array<double, 4>> cuts;
+      std::vector<std::array<double, 2>> starts;
+      for(const auto& child : group.second) {
+        const auto& node = child.second;
+        if(child.first != "line") continue;
+        const std::array<double, 4> xy = {node.get<double>("<xmlattr>.x1"), node.get<double>("<xmlattr>.y1"),
+                                          node.get<double>("<xmlattr>.x2"), node.get<double>("<xmlattr>.y2")};
+        const std::string cls = node.get<std::string>("<xmlattr>.class");
+        if(cls == "cut") cuts.push_back(xy);
+        if(cls != "notch") continue;
+        ++notches;
+        const std::string seam = node.get<std::string>("<xmlattr>.data-seam");
+        const int n = node.get<int>("<xmlattr>.data-n");
+        ++sides[{seam, n}];
+        largest[seam] = std::max(largest[seam], n);
+        starts.push_back({xy[0], xy[1]});
+      }
+      for(const auto& p : starts) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for(const auto& c : cuts) {
+          const double dx = c[2] - c[0], dy = c[3] - c[1], l2 = dx * dx + dy * dy;
+          const double t = l2 > 0 ? std::clamp(((p[0] - c[0]) * dx + (p[1] - c[1]) * dy) / l2, 0., 1.) : 0.;
+          nearest = std::min(nearest, std::hypot(c[0] + t * dx - p[0], c[1] + t * dy - p[1]));
+        }
+        BOOST_TEST(nearest < 1e-3);
+      }
+    }
+    BOOST_TEST(notches == pr.notches);
+    BOOST_TEST(largest.size() == pr.seam_labels);  // every seam has notches
+    for(const auto& l : largest)
+      for(int n = 1; n <= l.second; ++n)
+        BOOST_TEST(sides[std::make_pair(l.first, n)] == 2, "seam " << l.first << " notch " << n);
+    BOOST_TEST_MESSAGE(pr.notches << " notches on " << largest.size() << " seams");
+  }
+}
+
 BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
 {
   const Segmented& s = meshes().front();
@@ -547,6 +603,9 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.units = "furlong";
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.notch_spacing = -5;
   expect_refused(bad);
   BOOST_TEST(ss.str().empty());
 }

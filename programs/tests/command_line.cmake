@@ -17,7 +17,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--notches LENGTH" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
@@ -43,6 +43,7 @@ set(cases
   "--criterion paper|--criterion: paper not in"
   "--arap-border fixed|--arap-border: fixed not in"
   "--merge-order random|--merge-order: random not in"
+  "--notches 0mm|--notches: '0mm' is not a positive length"
   "--out-dir|--out-dir"
 )
 set(k 0)
@@ -96,7 +97,7 @@ else()
     string(APPEND failures "--json: seam_smoothing missing or patterns present\n")
   endif()
 endif()
-execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out" --size 15cm
+execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out" --size 15cm --notches 2cm
                 RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
 if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/out/report.json")
   string(APPEND failures "--out-dir: exit code ${code}, stderr '${err}'\n")

@@ -57,6 +57,9 @@ struct Pattern_options
   /// the largest height of the label text (0: from the page size); a piece's
   /// labels are made smaller where the piece is small
   double font_size = 0;
+  /// notches across the cut line, into the piece, about this far apart along every seam (0: none):
+  /// the same number on the two sides of a seam, at the same fractions of their lengths, numbered
+  double notch_spacing = 0;
   /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
   bool assembly_page = true;
 };
@@ -94,6 +97,7 @@ struct Pattern_result
   std::size_t seam_labels = 0;  ///< labels of seam curves, each drawn on both sides
   std::size_t fold_lines = 0;
   std::size_t tabs = 0;
+  std::size_t notches = 0;  ///< on both sides of every seam, counted once per side
   /// the order in which to join the pieces, built outward from the largest (by 3D area): each step
   /// joins the piece that shares the longest seams with those joined before
   std::vector<Assembly_step> assembly;

@@ -145,6 +145,12 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
       cairo_set_line_width(cr, line);
       cairo_set_source_rgb(cr, 0, 0, 0);
       internal::stroke_lines(cr, piece, Drawing::CUT);
+      for(const Drawing::Line& l : piece.notches) {
+        cairo_move_to(cr, l.a[0], l.a[1]);
+        cairo_line_to(cr, l.b[0], l.b[1]);
+      }
+      if(!piece.notches.empty()) cairo_stroke(cr);
+      for(const Drawing::Text& t : piece.notch_labels) internal::show_centred_text(cr, t);
       for(const Drawing::Text& t : piece.labels) internal::show_centred_text(cr, t);
       cairo_set_source_rgb(cr, 0.533, 0.533, 0.533);
       internal::show_centred_text(cr, piece.id);

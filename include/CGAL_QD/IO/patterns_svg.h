@@ -68,6 +68,10 @@ namespace IO {
 ///   both sides of the seam, inside the piece, beside the middle of the curve,
 ///   so the pieces can be matched;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
+/// - with `notch_spacing`, notches: short marks from the cut line into the
+///   piece (`<line class="notch" data-seam="A" data-n="1">`, with their
+///   number), the same count on the two sides of every seam curve, at the same
+///   fractions of each side's length, about `notch_spacing` apart;
 /// - fold lines on interior edges whose dihedral angle exceeds `fold_angle`:
 ///   mountain folds (convex edges) dash-dotted in red, valley folds (concave)
 ///   dashed in blue;
@@ -115,7 +119,8 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       << n_(8 * line) << ' ' << n_(4 * line) << "}.tab{fill:#eee;stroke:#777;stroke-width:" << n_(0.6 * line)
       << "}.page{fill:none;stroke:#ccc;stroke-width:" << n_(0.3 * mm) << "}"
       << "text{font-family:sans-serif;text-anchor:middle;dominant-baseline:middle}"
-      << (d.assembly.empty() ? "" : "text.assembly{text-anchor:start}") << "</style>\n";
+      << (d.assembly.empty() ? "" : "text.assembly{text-anchor:start}")
+      << (result.notches == 0 ? "" : ".notch{stroke:#000;stroke-width:" + n_(line) + "}") << "</style>\n";
   for(std::size_t p = 0; p < d.number_of_pages; ++p)
     out << "<rect class=\"page\" x=\"0\" y=\"" << n_(p * ph) << "\" width=\"" << n_(w) << "\" height=\"" << n_(ph)
         << "\"/>\n<text class=\"page\" x=\"" << n_(w / 2) << "\" y=\"" << n_(p * ph + ph - d.page_margin / 2)
@@ -135,6 +140,14 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
         out << "<line class=\"" << (l.kind == internal::Pattern_drawing::VALLEY ? "valley" : "mountain") << '"';
       out << " x1=\"" << n_(l.a[0]) << "\" y1=\"" << n_(l.a[1]) << "\" x2=\"" << n_(l.b[0]) << "\" y2=\""
           << n_(l.b[1]) << "\"/>\n";
+    }
+    for(std::size_t i = 0; i < piece.notches.size(); ++i) {
+      const internal::Pattern_drawing::Line& l = piece.notches[i];
+      const internal::Pattern_drawing::Text& t = piece.notch_labels[i];
+      out << "<line class=\"notch\" data-seam=\"" << internal::seam_label(l.vertices[0]) << "\" data-n=\""
+          << l.vertices[1] << "\" x1=\"" << n_(l.a[0]) << "\" y1=\"" << n_(l.a[1]) << "\" x2=\"" << n_(l.b[0])
+          << "\" y2=\"" << n_(l.b[1]) << "\"/>\n<text class=\"notch\" x=\"" << n_(t.at[0]) << "\" y=\""
+          << n_(t.at[1]) << "\" font-size=\"" << n_(t.size) << "\">" << t.text << "</text>\n";
     }
     for(const internal::Pattern_drawing::Text& t : piece.labels)
       out << "<text class=\"seam\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""

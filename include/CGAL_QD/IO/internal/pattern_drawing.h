@@ -43,7 +43,7 @@ namespace internal {
 struct Pattern_drawing
 {
   typedef std::array<double, 2> P2;
-  enum Line_kind { CUT, MOUNTAIN, VALLEY };
+  enum Line_kind { CUT, MOUNTAIN, VALLEY, NOTCH };
   struct Line
   {
     Line_kind kind;
@@ -64,6 +64,8 @@ struct Pattern_drawing
     std::vector<std::array<P2, 4>> tabs;  // drawn under the piece
     std::vector<Line> lines;              // cut and fold lines
     std::vector<Text> labels;             // of the seam curves
+    std::vector<Line> notches;            // from the cut line into the piece; `vertices` (seam, number)
+    std::vector<Text> notch_labels;       // their numbers
     Text id;                              // the chart id, at the centre of its box
   };
   std::string units;
@@ -160,7 +162,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   bool valid = corner_uv.size() == 3 * nf && mm_per_unit > 0 && finite_at_least(options.scale, 0) &&
                finite_at_least(options.model_size, 0) && finite_at_least(options.spacing, 0) &&
                finite_at_least(options.tab_width, 0) && finite_at_least(options.page_margin, 0) &&
-               finite_at_least(options.font_size, 0) && std::isfinite(options.fold_angle) &&
+               finite_at_least(options.font_size, 0) && finite_at_least(options.notch_spacing, 0) &&
+               std::isfinite(options.fold_angle) &&
                std::isfinite(options.page_width) && std::isfinite(options.page_height) &&
                options.page_width > 2 * options.page_margin && options.page_height > 2 * options.page_margin;
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
@@ -308,6 +311,58 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     curve_length[id] = total;
   }
   result.seam_labels = curves.size();
+  // notches: at the same fractions of the 2D length of the two sides of every
+  // seam curve, so that they meet when the seam is sewn; numbered along the
+  // curve, from the same end on both sides
+  std::vector<std::vector<std::pair<Pattern_drawing::Line, Pattern_drawing::Text>>> notches_of_chart(n);
+  if(options.notch_spacing > 0)
+    for(std::size_t id = 0; id < curves.size(); ++id) {
+      const std::vector<halfedge_descriptor>& hs = curves[id];
+      const bool closed = target(hs.back(), tm) == source(hs.front(), tm) && hs.size() > 2;
+      // each side as a polyline along the curve, with the normal into its piece on every edge
+      struct Side
+      {
+        std::size_t chart;
+        std::vector<P2> points, normals;
+        std::vector<double> at;  // arc length at each point
+      } sides[2];
+      for(int side = 0; side < 2; ++side) {
+        Side& sd = sides[side];
+        sd.chart = chart[get(fim, face(side == 0 ? hs.front() : opposite(hs.front(), tm), tm))];
+        for(std::size_t i = 0; i < hs.size(); ++i) {
+          const halfedge_descriptor g = side == 0 ? hs[i] : opposite(hs[i], tm);
+          const P2 a = point_at(corner(prev(g, tm))), b = point_at(corner(g));  // g runs from a to b
+          const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
+          const P2 from = side == 0 ? a : b, to = side == 0 ? b : a;
+          if(i == 0) sd.points.push_back(from), sd.at.push_back(0);
+          sd.points.push_back(to);
+          sd.at.push_back(sd.at.back() + l);
+          sd.normals.push_back(l > 0 ? P2{{dy / l, -dx / l}} : P2{{0, 0}});
+        }
+      }
+      const double length = (sides[0].at.back() + sides[1].at.back()) / 2;
+      if(!(length > 0)) continue;
+      const std::size_t count = closed ? (std::max)(2., std::round(length / options.notch_spacing))
+                                       : (std::max)(1., std::round(length / options.notch_spacing) - 1);
+      for(const Side& sd : sides) {
+        const double tick = (std::min)(3 * mm, smaller_side(sd.chart) / 8), number = (std::min)(0.6 * font, 2 * tick);
+        std::size_t e = 0;
+        for(std::size_t j = 1; j <= count; ++j) {
+          const double t = (closed ? double(j - 1) / count : double(j) / (count + 1)) * sd.at.back();
+          while(e + 1 < sd.normals.size() && sd.at[e + 1] < t) ++e;
+          const double span = sd.at[e + 1] - sd.at[e], u = span > 0 ? (t - sd.at[e]) / span : 0.;
+          const P2 q{{sd.points[e][0] + u * (sd.points[e + 1][0] - sd.points[e][0]),
+                      sd.points[e][1] + u * (sd.points[e + 1][1] - sd.points[e][1])}};
+          const P2& nn = sd.normals[e];
+          notches_of_chart[sd.chart].emplace_back(
+              Pattern_drawing::Line{Pattern_drawing::NOTCH, q, P2{{q[0] + tick * nn[0], q[1] + tick * nn[1]}},
+                                    {{id, j}}},
+              Pattern_drawing::Text{P2{{q[0] + (tick + 0.8 * number) * nn[0], q[1] + (tick + 0.8 * number) * nn[1]}},
+                                    number, 0., std::to_string(j)});
+          ++result.notches;
+        }
+      }
+    }
   const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
   {
     std::vector<double> area(n, 0.);
@@ -386,14 +441,20 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       const halfedge_descriptor h = hl.first;
       const P2 a = point_at(corner(prev(h, tm))), b = point_at(corner(h));
       const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
-      // towards the face, (dy, -dx) / l as for the tabs, by 0.9 label heights
-      const double t = l > 0 ? 0.9 * label / l : 0.;
+      // towards the face, (dy, -dx) / l as for the tabs, by 0.9 label heights, and
+      // beyond the notches and their numbers if there are
+      const double beyond = options.notch_spacing > 0 ? (std::min)(3 * mm, side / 8) + 1.2 * font : 0.;
+      const double t = l > 0 ? (0.9 * label + beyond) / l : 0.;
       const P2 at{{(a[0] + b[0]) / 2 + t * dy, (a[1] + b[1]) / 2 - t * dx}};
       const double angle = std::atan2(dy, dx) * 180 / 3.141592653589793;
       const double upright = angle > 90 || angle < -90 ? angle + 180 : angle;
       piece.labels.push_back({at, label, upright, seam_label(hl.second)});
     }
     // the chart id at the centre of its box
+    for(const auto& nt : notches_of_chart[k]) {
+      piece.notches.push_back(nt.first);
+      piece.notch_labels.push_back(nt.second);
+    }
     piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
                 (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
   }
