@@ -450,11 +450,11 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       const double upright = angle > 90 || angle < -90 ? angle + 180 : angle;
       piece.labels.push_back({at, label, upright, seam_label(hl.second)});
     }
-    // the chart id at the centre of its box
     for(const auto& nt : notches_of_chart[k]) {
       piece.notches.push_back(nt.first);
       piece.notch_labels.push_back(nt.second);
     }
+    // the chart id at the centre of its box
     piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
                 (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
   }
