@@ -175,6 +175,12 @@ int main(int argc, char** argv)
     return fail("--size: '" + o.size + "' is not a positive length such as 200mm, 20cm or 8in");
   if(!o.notches.empty() && !((pattern.notch_spacing = length(o.notches)) > 0))
     return fail("--notches: '" + o.notches + "' is not a positive length such as 50mm or 2in");
+  if(!o.seam_allowance.empty() && !((pattern.seam_allowance = length(o.seam_allowance)) > 0))
+    return fail("--seam-allowance: '" + o.seam_allowance + "' is not a positive length such as 6mm or 0.25in");
+#ifndef CGAL_QD_HAS_CLIPPER
+  if(pattern.seam_allowance > 0)
+    return fail("--seam-allowance: this segment_mesh was built without Clipper (libpolyclipping-dev)");
+#endif
 
   // reading and repairs in one place: say what was repaired, or what is wrong
   Mesh mesh;
@@ -286,7 +292,7 @@ int main(int argc, char** argv)
            CGAL_QD::Error_code::OK;
     if(ok)
       ok = bool(files.file("report.json")
-                << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units, pdf})
+                << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units, pdf, pattern.seam_allowance})
                        .dump(2)
                 << "\n");
     if(!ok || !files.commit()) return fail("cannot write into '" + o.out_dir + "'");

@@ -33,6 +33,7 @@ struct Options
   bool tabs = false;
   bool assembly_page = true;
   std::string notches;  // the spacing of the notches, a length with its unit
+  std::string seam_allowance;  // a length with its unit
   // the segmentation
   double vsa_tolerance = 0.25;
   double max_area_distortion = 0.10;
@@ -123,6 +124,11 @@ inline void add_options(CLI::App& app, Options& o)
   app.add_option("--notches", o.notches,
                  "Notches along every seam, about LENGTH apart (50mm, 2in; a bare number is in --units): the same "
                  "number on both sides of a seam, numbered, where the two sides meet. Default: none")
+      ->type_name("LENGTH")
+      ->group(pattern);
+  app.add_option("--seam-allowance", o.seam_allowance,
+                 "Cut LENGTH (6mm, 0.25in; a bare number is in --units) outside every piece, with the piece's border "
+                 "dashed as the stitch line. Default: none (cut on the border)")
       ->type_name("LENGTH")
       ->group(pattern);
   app.add_flag("!--no-assembly-page", o.assembly_page,

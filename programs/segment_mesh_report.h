@@ -57,6 +57,7 @@ struct Pattern_report
   const CGAL_QD::IO::Pattern_result* result = nullptr;
   std::string units;
   bool pdf = false;  // whether patterns.pdf was written too
+  double seam_allowance = 0;  // in the drawing's units
 };
 
 template <class Result, class Mesh>
@@ -115,6 +116,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"reduced_to_fit", p.reduced_to_fit},
                      {"oversized_pieces", p.oversized_charts},
                      {"notches", p.notches},
+                     {"seam_allowance", number(patterns.seam_allowance)},
                      {"pdf", patterns.pdf}};
     Json steps = Json::array();
     for(std::size_t i = 0; i < p.assembly.size(); ++i)

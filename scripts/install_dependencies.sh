@@ -4,7 +4,8 @@
 # libcgal-demo brings CGAL's real test meshes; ccache speeds up rebuilds.
 # The program segment_mesh parses its options with CLI11 and writes its report
 # with nlohmann-json (both header-only), and writes PDF patterns with cairo
-# (optional; pkg-config finds it); poppler-utils lets a test print a PDF
+# (optional; pkg-config finds it), and seam allowances with Clipper
+# (libpolyclipping-dev, optional); poppler-utils lets a test print a PDF
 # pattern to pixels and measure it.
 # Optional accelerators, detected at configure time: SuiteSparse (CHOLMOD) with
 # OpenBLAS for the interior system of flatten_patch(), TBB for the parallel
@@ -12,7 +13,7 @@
 set -euo pipefail
 packages=(build-essential cmake ccache libcgal-dev libeigen3-dev libboost-graph-dev
           libboost-test-dev libcgal-demo libcli11-dev nlohmann-json3-dev
-          libcairo2-dev pkg-config poppler-utils libsuitesparse-dev libopenblas-dev libtbb-dev)
+          libcairo2-dev libpolyclipping-dev pkg-config poppler-utils libsuitesparse-dev libopenblas-dev libtbb-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

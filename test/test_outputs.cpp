@@ -337,6 +337,14 @@ void expect_pieces_apart_within_margins(const Drawn_pattern& d, double margin)
 }
 
 // the longest side of the bounding box
+// the distance from p to the segment c (x1, y1, x2, y2)
+double segment_distance(const std::array<double, 2>& p, const std::array<double, 4>& c)
+{
+  const double dx = c[2] - c[0], dy = c[3] - c[1], l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::clamp(((p[0] - c[0]) * dx + (p[1] - c[1]) * dy) / l2, 0., 1.) : 0.;
+  return std::hypot(c[0] + t * dx - p[0], c[1] + t * dy - p[1]);
+}
+
 double extent(const Surface_mesh& tm)
 {
   const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(tm);
@@ -564,11 +572,7 @@ BOOST_AUTO_TEST_CASE(pattern_notches_match_on_both_sides_of_every_seam)
       }
       for(const auto& p : starts) {
         double nearest = std::numeric_limits<double>::infinity();
-        for(const auto& c : cuts) {
-          const double dx = c[2] - c[0], dy = c[3] - c[1], l2 = dx * dx + dy * dy;
-          const double t = l2 > 0 ? std::clamp(((p[0] - c[0]) * dx + (p[1] - c[1]) * dy) / l2, 0., 1.) : 0.;
-          nearest = std::min(nearest, std::hypot(c[0] + t * dx - p[0], c[1] + t * dy - p[1]));
-        }
+        for(const auto& c : cuts) nearest = std::min(nearest, segment_distance(p, c));
         BOOST_TEST(nearest < 1e-3);
       }
     }
@@ -580,6 +584,81 @@ BOOST_AUTO_TEST_CASE(pattern_notches_match_on_both_sides_of_every_seam)
     BOOST_TEST_MESSAGE(pr.notches << " notches on " << largest.size() << " seams");
   }
 }
+
+#ifdef CGAL_QD_HAS_CLIPPER
+// the seam allowance: every point of its outline is the allowance away from
+// the piece's border (the stitch line), and every point of the border at least
+// that far inside the outline; the pieces, allowance included, apart
+BOOST_AUTO_TEST_CASE(pattern_seam_allowance_is_its_width_from_the_stitch_line)
+{
+  for(const Segmented& s : meshes()) {
+    const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+    QD::IO::Pattern_options options;
+    options.seam_allowance = 6;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr =
+        QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+    BOOST_REQUIRE(pr);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_xml(ss, tree);
+    typedef std::array<double, 4> Segment;
+    std::size_t outlines = 0;
+    double nearest_low = 1e30, nearest_high = 0, inside = 1e30;
+    std::vector<std::array<double, 4>> boxes;  // of every piece's outer outline
+    for(const auto& group : tree.get_child("svg")) {
+      if(group.first != "g") continue;
+      std::vector<Segment> stitch, cut;
+      std::vector<std::array<double, 2>> outline_points;
+      for(const auto& child : group.second) {
+        const auto& node = child.second;
+        const std::string cls = node.get<std::string>("<xmlattr>.class", "");
+        if(child.first == "line" && cls == "cut")
+          stitch.push_back({node.get<double>("<xmlattr>.x1"), node.get<double>("<xmlattr>.y1"),
+                            node.get<double>("<xmlattr>.x2"), node.get<double>("<xmlattr>.y2")});
+        if(child.first != "polygon" || cls != "allowance") continue;
+        ++outlines;
+        std::istringstream pts(node.get<std::string>("<xmlattr>.points"));
+        std::vector<std::array<double, 2>> ring;
+        std::string xy;
+        while(pts >> xy) ring.push_back({std::stod(xy.substr(0, xy.find(','))), std::stod(xy.substr(xy.find(',') + 1))});
+        for(std::size_t i = 0; i < ring.size(); ++i) {
+          const auto& a = ring[i];
+          const auto& b = ring[(i + 1) % ring.size()];
+          cut.push_back({a[0], a[1], b[0], b[1]});
+        }
+        outline_points.insert(outline_points.end(), ring.begin(), ring.end());
+      }
+      BOOST_REQUIRE(!stitch.empty());
+      BOOST_REQUIRE(!outline_points.empty());
+      for(const auto& p : outline_points) {
+        double d = 1e30;
+        for(const Segment& c : stitch) d = std::min(d, segment_distance(p, c));
+        nearest_low = std::min(nearest_low, d), nearest_high = std::max(nearest_high, d);
+      }
+      for(const Segment& c : stitch)
+        for(const Segment& e : cut) inside = std::min(inside, segment_distance({c[0], c[1]}, e));
+      std::array<double, 4> box = {1e30, 1e30, -1e30, -1e30};
+      for(const auto& p : outline_points)
+        box = {std::min(box[0], p[0]), std::min(box[1], p[1]), std::max(box[2], p[0]), std::max(box[3], p[1])};
+      boxes.push_back(box);
+    }
+    BOOST_TEST_MESSAGE(outlines << " outlines; their points " << nearest_low << " to " << nearest_high
+                                << " mm from the stitch lines, which are at least " << inside << " mm inside");
+    BOOST_TEST(outlines >= pr.number_of_charts);
+    // 6 mm, within the SVG's 4 decimals and Clipper's 0.1 micrometre grid and 6 micrometre arcs
+    BOOST_TEST(nearest_low > 6 - 0.01);
+    BOOST_TEST(nearest_high < 6 + 0.01);
+    BOOST_TEST(inside > 6 - 0.01);
+    // the allowance is in the layout: the outlines' boxes of pieces on the same page do not meet
+    for(std::size_t i = 0; i < boxes.size(); ++i)
+      for(std::size_t j = i + 1; j < boxes.size(); ++j) {
+        const bool apart = boxes[i][2] <= boxes[j][0] || boxes[j][2] <= boxes[i][0] || boxes[i][3] <= boxes[j][1] ||
+                           boxes[j][3] <= boxes[i][1];
+        BOOST_TEST(apart, "the allowances of pieces " << i << " and " << j << " meet");
+      }
+  }
+}
+#endif // CGAL_QD_HAS_CLIPPER
 
 BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
 {
@@ -606,6 +685,9 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.notch_spacing = -5;
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.seam_allowance = std::numeric_limits<double>::quiet_NaN();
   expect_refused(bad);
   BOOST_TEST(ss.str().empty());
 }

@@ -1,7 +1,8 @@
 # The command line of segment_mesh (PROGRAM): --help lists every option with
 # its default, --version prints VERSION, a bad option or value is named in the
 # error, and what --json prints and report.json holds follow SCHEMA, on MESH;
-# with PDF (built with cairo) patterns.pdf is written too.
+# with PDF (built with cairo) patterns.pdf is written too, with CLIPPER a seam
+# allowance is drawn (and refused without).
 # Output directories are written into WORK_DIR.
 
 cmake_minimum_required(VERSION 3.19)
@@ -17,7 +18,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--notches LENGTH" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
@@ -44,6 +45,7 @@ set(cases
   "--arap-border fixed|--arap-border: fixed not in"
   "--merge-order random|--merge-order: random not in"
   "--notches 0mm|--notches: '0mm' is not a positive length"
+  "--seam-allowance 6furlongs|--seam-allowance: '6furlongs' is not a positive length"
   "--out-dir|--out-dir"
 )
 set(k 0)
@@ -97,7 +99,19 @@ else()
     string(APPEND failures "--json: seam_smoothing missing or patterns present\n")
   endif()
 endif()
-execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out" --size 15cm --notches 2cm
+# with a seam allowance where the program has Clipper, refused with a message where it has not
+set(allowance "")
+if(CLIPPER)
+  set(allowance --seam-allowance 5mm)
+else()
+  execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out_allowance" --seam-allowance 5mm
+                  RESULT_VARIABLE code ERROR_VARIABLE err)
+  if(NOT code EQUAL 1 OR NOT err MATCHES "--seam-allowance: this segment_mesh was built without Clipper"
+     OR EXISTS "${WORK_DIR}/out_allowance")
+    string(APPEND failures "--seam-allowance without Clipper: exit code ${code}, stderr '${err}'\n")
+  endif()
+endif()
+execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out" --size 15cm --notches 2cm ${allowance}
                 RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
 if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/out/report.json")
   string(APPEND failures "--out-dir: exit code ${code}, stderr '${err}'\n")
@@ -107,6 +121,10 @@ else()
   string(JSON size GET "${report}" patterns model_size)
   if(NOT size EQUAL 150)
     string(APPEND failures "report.json: model_size '${size}' for --size 15cm\n")
+  endif()
+  string(JSON drawn_allowance GET "${report}" patterns seam_allowance)
+  if((CLIPPER AND NOT drawn_allowance EQUAL 5) OR (NOT CLIPPER AND NOT drawn_allowance EQUAL 0))
+    string(APPEND failures "report.json: seam_allowance '${drawn_allowance}'\n")
   endif()
   string(JSON pdf GET "${report}" patterns pdf)
   # the assembly: every piece joined once, the first one onto itself

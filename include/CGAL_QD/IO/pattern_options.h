@@ -60,6 +60,9 @@ struct Pattern_options
   /// notches across the cut line, into the piece, about this far apart along every seam (0: none):
   /// the same number on the two sides of a seam, at the same fractions of their lengths, numbered
   double notch_spacing = 0;
+  /// a seam allowance this wide around every piece (0: none): the cut line then runs this far outside
+  /// the piece's border, which becomes a dashed stitch line; needs Clipper (`CGAL_QD_HAS_CLIPPER`)
+  double seam_allowance = 0;
   /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
   bool assembly_page = true;
 };

@@ -144,7 +144,20 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
       cairo_set_dash(cr, nullptr, 0, 0);
       cairo_set_line_width(cr, line);
       cairo_set_source_rgb(cr, 0, 0, 0);
+      for(const auto& outline : piece.allowance) {  // the cut line, outside the stitch line
+        for(std::size_t i = 0; i < outline.size(); ++i)
+          (i ? cairo_line_to : cairo_move_to)(cr, outline[i][0], outline[i][1]);
+        cairo_close_path(cr);
+        cairo_stroke(cr);
+      }
+      if(d.seam_allowance > 0) {  // the stitch line, dashed
+        const double stitch[2] = {6 * line, 3 * line};
+        cairo_set_line_width(cr, 0.6 * line);
+        cairo_set_dash(cr, stitch, 2, 0);
+      }
       internal::stroke_lines(cr, piece, Drawing::CUT);
+      cairo_set_dash(cr, nullptr, 0, 0);
+      cairo_set_line_width(cr, line);
       for(const Drawing::Line& l : piece.notches) {
         cairo_move_to(cr, l.a[0], l.a[1]);
         cairo_line_to(cr, l.b[0], l.b[1]);

@@ -68,6 +68,10 @@ namespace IO {
 ///   both sides of the seam, inside the piece, beside the middle of the curve,
 ///   so the pieces can be matched;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
+/// - with `seam_allowance` (needs Clipper: `CGAL_QD_HAS_CLIPPER`; otherwise
+///   `INVALID_ARGUMENT`), the outline of the points within that distance of the
+///   piece (`<polygon class="allowance">`, round at convex corners) is the cut
+///   line, and the piece's border the stitch line, dashed;
 /// - with `notch_spacing`, notches: short marks from the cut line into the
 ///   piece (`<line class="notch" data-seam="A" data-n="1">`, with their
 ///   number), the same count on the two sides of every seam curve, at the same
@@ -113,7 +117,12 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       << " at its largest); cut on solid lines, fold red dash-dot lines as mountains and blue dashed "
       << "lines as valleys, join equal labels.</desc>\n";
   auto n_ = [](double x) { return internal::svg_number(x); };
-  out << "<style>.cut{stroke:#000;stroke-width:" << n_(line) << ";fill:none}.mountain{stroke:#c00;stroke-width:"
+  // with a seam allowance the piece's border is the stitch line, dashed, and the allowance's outline the cut
+  const std::string cut = d.seam_allowance > 0 ? ".cut{stroke:#000;stroke-width:" + n_(0.6 * line) + ";stroke-dasharray:" +
+                                                     n_(6 * line) + ' ' + n_(3 * line) + ";fill:none}.allowance{stroke:#000;stroke-width:" +
+                                                     n_(line) + ";fill:none}"
+                                               : ".cut{stroke:#000;stroke-width:" + n_(line) + ";fill:none}";
+  out << "<style>" << cut << ".mountain{stroke:#c00;stroke-width:"
       << n_(0.8 * line) << ";stroke-dasharray:" << n_(12 * line) << ' ' << n_(4 * line) << ' ' << n_(2 * line) << ' '
       << n_(4 * line) << "}.valley{stroke:#00c;stroke-width:" << n_(0.8 * line) << ";stroke-dasharray:"
       << n_(8 * line) << ' ' << n_(4 * line) << "}.tab{fill:#eee;stroke:#777;stroke-width:" << n_(0.6 * line)
@@ -133,6 +142,11 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       out << "<polygon class=\"tab\" points=\"" << n_(t[0][0]) << ',' << n_(t[0][1]) << ' ' << n_(t[1][0]) << ','
           << n_(t[1][1]) << ' ' << n_(t[2][0]) << ',' << n_(t[2][1]) << ' ' << n_(t[3][0]) << ',' << n_(t[3][1])
           << "\"/>\n";
+    for(const auto& outline : piece.allowance) {
+      out << "<polygon class=\"allowance\" points=\"";
+      for(std::size_t i = 0; i < outline.size(); ++i) out << (i ? " " : "") << n_(outline[i][0]) << ',' << n_(outline[i][1]);
+      out << "\"/>\n";
+    }
     for(const internal::Pattern_drawing::Line& l : piece.lines) {
       if(l.kind == internal::Pattern_drawing::CUT)
         out << "<line class=\"cut\" data-v=\"" << l.vertices[0] << ' ' << l.vertices[1] << "\"";

@@ -14,6 +14,9 @@
 #include <CGAL_QD/IO/internal/assembly_order.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
 #include <CGAL_QD/IO/pattern_options.h>
+#ifdef CGAL_QD_HAS_CLIPPER
+#include <CGAL_QD/IO/internal/seam_allowance.h>
+#endif
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/pack_charts.h>
@@ -66,12 +69,14 @@ struct Pattern_drawing
     std::vector<Text> labels;             // of the seam curves
     std::vector<Line> notches;            // from the cut line into the piece; `vertices` (seam, number)
     std::vector<Text> notch_labels;       // their numbers
+    std::vector<std::vector<P2>> allowance;  // the outlines of the seam allowance: the cut lines then
     Text id;                              // the chart id, at the centre of its box
   };
   std::string units;
   double page_width = 0, page_height = 0, page_margin = 0;
   std::size_t number_of_pages = 0;
   double line_width = 0;  // of the cut lines
+  double seam_allowance = 0;
   double font_size = 0;   // the largest label height
   double millimetre = 1;  // in drawing units
   std::vector<Piece> pieces;  // in drawing order
@@ -163,6 +168,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                finite_at_least(options.model_size, 0) && finite_at_least(options.spacing, 0) &&
                finite_at_least(options.tab_width, 0) && finite_at_least(options.page_margin, 0) &&
                finite_at_least(options.font_size, 0) && finite_at_least(options.notch_spacing, 0) &&
+               finite_at_least(options.seam_allowance, 0) &&
                std::isfinite(options.fold_angle) &&
                std::isfinite(options.page_width) && std::isfinite(options.page_height) &&
                options.page_width > 2 * options.page_margin && options.page_height > 2 * options.page_margin;
@@ -185,6 +191,12 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     result.status = Error_code::INVALID_COORDINATES;
     return result;
   }
+#ifndef CGAL_QD_HAS_CLIPPER
+  if(options.seam_allowance > 0) {  // the offset needs Clipper
+    result.status = Error_code::INVALID_ARGUMENT;
+    return result;
+  }
+#endif
   const double mm = 1 / mm_per_unit;  // drawing units per millimetre
   const double font = options.font_size > 0 ? options.font_size : std::min(options.page_width, options.page_height) / 60;
 
@@ -225,7 +237,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     boxes[k] = internal::min_area_rectangle(points);
     used[k] = true;
   }
-  const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0);
+  const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0) + options.seam_allowance;
   if(options.scale > 0) {
     result.scale = options.scale;
   } else {
@@ -380,6 +392,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.page_margin = options.page_margin;
   drawing.number_of_pages = result.number_of_pages;
   drawing.line_width = line;
+  drawing.seam_allowance = options.seam_allowance;
   drawing.font_size = font;
   drawing.millimetre = mm;
   drawing.pieces.clear();
@@ -454,6 +467,13 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       piece.notches.push_back(nt.first);
       piece.notch_labels.push_back(nt.second);
     }
+#ifdef CGAL_QD_HAS_CLIPPER
+    if(options.seam_allowance > 0) {
+      std::vector<std::array<P2, 3>> triangles;
+      for(std::size_t i : faces_of_chart[k]) triangles.push_back({{point_at(3 * i), point_at(3 * i + 1), point_at(3 * i + 2)}});
+      piece.allowance = seam_allowance_outline(triangles, options.seam_allowance, 1e-4 * mm);
+    }
+#endif
     // the chart id at the centre of its box
     piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
                 (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
