@@ -155,6 +155,7 @@ int main(int argc, char** argv)
   pattern.scale = o.scale;
   pattern.tabs = o.tabs;
   pattern.assembly_page = o.assembly_page;
+  pattern.fold_angle = o.fold_angle * 3.141592653589793 / 180;
   const double mm_per_unit = CGAL_QD::IO::millimetres_per_unit(pattern.units);
   double page_mm[2] = {210, 297};
   segment_mesh::page_size(o.page, page_mm[0], page_mm[1]);

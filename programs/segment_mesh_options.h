@@ -32,6 +32,7 @@ struct Options
   std::string page = "a4";
   bool tabs = false;
   bool assembly_page = true;
+  double fold_angle = 10;  // degrees
   std::string notches;  // the spacing of the notches, a length with its unit
   std::string seam_allowance;  // a length with its unit
   // the segmentation
@@ -130,6 +131,12 @@ inline void add_options(CLI::App& app, Options& o)
                  "Cut LENGTH (6mm, 0.25in; a bare number is in --units) outside every piece, with the piece's border "
                  "dashed as the stitch line. Default: none (cut on the border)")
       ->type_name("LENGTH")
+      ->group(pattern);
+  app.add_option("--fold-angle", o.fold_angle,
+                 "Draw fold lines on the edges inside a piece that bend more than DEGREES (for paper and card; "
+                 "180: none, for fabric)")
+      ->type_name("DEGREES")
+      ->check(CLI::Range(0., 180.))
       ->group(pattern);
   app.add_flag("!--no-assembly-page", o.assembly_page,
                "Leave out the last page, which lists the order in which to join the pieces")

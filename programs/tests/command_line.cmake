@@ -18,7 +18,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
@@ -45,6 +45,7 @@ set(cases
   "--arap-border fixed|--arap-border: fixed not in"
   "--merge-order random|--merge-order: random not in"
   "--notches 0mm|--notches: '0mm' is not a positive length"
+  "--fold-angle 200|--fold-angle: Value 200 not in range"
   "--seam-allowance 6furlongs|--seam-allowance: '6furlongs' is not a positive length"
   "--out-dir|--out-dir"
 )
