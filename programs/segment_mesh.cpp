@@ -311,14 +311,9 @@ int main(int argc, char** argv)
       message << ", " << pages.oversized_charts << (pages.oversized_charts == 1 ? " piece" : " pieces") << " larger than a page";
     message << "), segmentation.svg and report.json into " << dir.string() << "\n";
     // the order in which to join the pieces, as on the pattern's last page
-    for(std::size_t i = 0; i < pages.assembly.size(); ++i) {
-      const CGAL_QD::IO::Assembly_step& step = pages.assembly[i];
-      message << (i == 0 ? "  assembly       " : "                 ") << i + 1 << ". piece " << step.piece;
-      if(i == 0) message << " (the largest)";
-      if(step.onto != step.piece) message << " onto piece " << step.onto;
-      for(std::size_t k = 0; k < step.seams.size(); ++k) message << (k == 0 ? ": " : ", ") << step.seams[k];
-      message << "\n";
-    }
+    for(std::size_t i = 0; i < pages.assembly.size(); ++i)
+      message << (i == 0 ? "  assembly       " : "                 ")
+              << CGAL_QD::IO::assembly_step_text(pages.assembly, i) << "\n";
     written = message.str();
   }
   if(o.json) {

@@ -25,21 +25,19 @@ namespace segment_mesh {
 
 typedef nlohmann::ordered_json Json;
 
-// six significant digits, as a reader wants them; JSON has no NaN or infinity
-inline Json number(double x)
-{
-  if(!std::isfinite(x)) return nullptr;
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", x);
-  return std::strtod(buffer, nullptr);
-}
-
-// the same for a sentence
+// six significant digits, as a reader wants them
 inline std::string text(double x)
 {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", x);
   return buffer;
+}
+
+// the same in JSON, which has no NaN or infinity
+inline Json number(double x)
+{
+  if(!std::isfinite(x)) return nullptr;
+  return std::strtod(text(x).c_str(), nullptr);
 }
 
 // what the seam smoothing did

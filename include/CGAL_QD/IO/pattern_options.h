@@ -81,6 +81,18 @@ struct Assembly_step
 };
 
 /// \ingroup PkgCGAL_QDRef
+/// the sentence of step `i` (from 0) of an assembly, as the pattern's last page prints it:
+/// "2. piece 5 onto piece 3: A, B" (the first step "1. piece 3 (the largest)").
+inline std::string assembly_step_text(const std::vector<Assembly_step>& steps, std::size_t i)
+{
+  std::string t = std::to_string(i + 1) + ". piece " + std::to_string(steps[i].piece);
+  if(i == 0) t += " (the largest)";
+  if(steps[i].onto != steps[i].piece) t += " onto piece " + std::to_string(steps[i].onto);
+  for(std::size_t k = 0; k < steps[i].seams.size(); ++k) t += (k == 0 ? ": " : ", ") + steps[i].seams[k];
+  return t;
+}
+
+/// \ingroup PkgCGAL_QDRef
 /// what `write_patterns_SVG()` or `write_patterns_PDF()` drew.
 struct Pattern_result
 {

@@ -107,6 +107,17 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   const double mountain[4] = {12 * line, 4 * line, 2 * line, 4 * line}, valley[2] = {8 * line, 4 * line};
+  // a piece is drawn on every page it reaches: its own, and the next ones when it is
+  // larger than a page; its top and bottom
+  std::vector<std::array<double, 2>> reach;
+  for(const Drawing::Piece& piece : d.pieces) {
+    double top = piece.id.at[1], bottom = piece.id.at[1];
+    for(const Drawing::Line& l : piece.lines)
+      top = (std::min)({top, l.a[1], l.b[1]}), bottom = (std::max)({bottom, l.a[1], l.b[1]});
+    for(const auto& t : piece.tabs)
+      for(const auto& p : t) top = (std::min)(top, p[1]), bottom = (std::max)(bottom, p[1]);
+    reach.push_back({{top, bottom}});
+  }
   for(std::size_t page = 0; page < d.number_of_pages; ++page) {
     cairo_save(cr);
     cairo_scale(cr, points, points);
@@ -116,14 +127,9 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
     internal::show_centred_text(cr, {{{w / 2, page * ph + ph - d.page_margin / 2}},
                                      (std::min)(font * 0.8, 0.8 * d.page_margin), 0.,
                                      "page " + std::to_string(page + 1) + " of " + std::to_string(d.number_of_pages)});
-    for(const Drawing::Piece& piece : d.pieces) {
-      // a piece is drawn on every page it reaches: its own, and the next ones when it is larger than a page
-      double top = piece.id.at[1], bottom = piece.id.at[1];
-      for(const Drawing::Line& l : piece.lines)
-        top = (std::min)({top, l.a[1], l.b[1]}), bottom = (std::max)({bottom, l.a[1], l.b[1]});
-      for(const auto& t : piece.tabs)
-        for(const auto& p : t) top = (std::min)(top, p[1]), bottom = (std::max)(bottom, p[1]);
-      if(bottom < page * ph || top > (page + 1) * ph) continue;
+    for(std::size_t k = 0; k < d.pieces.size(); ++k) {
+      const Drawing::Piece& piece = d.pieces[k];
+      if(reach[k][1] < page * ph || reach[k][0] > (page + 1) * ph) continue;
       cairo_set_line_width(cr, 0.6 * line);
       for(const auto& t : piece.tabs) {
         cairo_move_to(cr, t[0][0], t[0][1]);

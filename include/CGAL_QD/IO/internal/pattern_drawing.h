@@ -88,13 +88,7 @@ struct Pattern_drawing
 inline void lay_out_assembly_page(const std::vector<IO::Assembly_step>& steps, std::size_t page, Pattern_drawing& d)
 {
   std::vector<std::string> steps_text;
-  for(std::size_t i = 0; i < steps.size(); ++i) {
-    std::string t = std::to_string(i + 1) + ". piece " + std::to_string(steps[i].piece);
-    if(i == 0) t += " (the largest)";
-    if(steps[i].onto != steps[i].piece) t += " onto piece " + std::to_string(steps[i].onto);
-    for(std::size_t k = 0; k < steps[i].seams.size(); ++k) t += (k == 0 ? ": " : ", ") + steps[i].seams[k];
-    steps_text.push_back(t);
-  }
+  for(std::size_t i = 0; i < steps.size(); ++i) steps_text.push_back(IO::assembly_step_text(steps, i));
   const double m = d.page_margin, title = 1.2 * d.font_size, top = d.page_height * page + m + 2 * title;
   const double width = d.page_width - 2 * m, height = d.page_height - 2 * m - 2 * title;
   // a step longer than its column goes on, indented, after a comma
@@ -327,6 +321,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   // seam curve, so that they meet when the seam is sewn; numbered along the
   // curve, from the same end on both sides
   std::vector<std::vector<std::pair<Pattern_drawing::Line, Pattern_drawing::Text>>> notches_of_chart(n);
+  auto notch_length = [&](std::size_t k) { return (std::min)(3 * mm, smaller_side(k) / 8); };
   if(options.notch_spacing > 0)
     for(std::size_t id = 0; id < curves.size(); ++id) {
       const std::vector<halfedge_descriptor>& hs = curves[id];
@@ -357,7 +352,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       const std::size_t count = closed ? (std::max)(2., std::round(length / options.notch_spacing))
                                        : (std::max)(1., std::round(length / options.notch_spacing) - 1);
       for(const Side& sd : sides) {
-        const double tick = (std::min)(3 * mm, smaller_side(sd.chart) / 8), number = (std::min)(0.6 * font, 2 * tick);
+        const double tick = notch_length(sd.chart), number = (std::min)(0.6 * font, 2 * tick);
         std::size_t e = 0;
         for(std::size_t j = 1; j <= count; ++j) {
           const double t = (closed ? double(j - 1) / count : double(j) / (count + 1)) * sd.at.back();
@@ -456,7 +451,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
       // towards the face, (dy, -dx) / l as for the tabs, by 0.9 label heights, and
       // beyond the notches and their numbers if there are
-      const double beyond = options.notch_spacing > 0 ? (std::min)(3 * mm, side / 8) + 1.2 * font : 0.;
+      const double beyond = options.notch_spacing > 0 ? notch_length(k) + 1.2 * font : 0.;
       const double t = l > 0 ? (0.9 * label + beyond) / l : 0.;
       const P2 at{{(a[0] + b[0]) / 2 + t * dy, (a[1] + b[1]) / 2 - t * dx}};
       const double angle = std::atan2(dy, dx) * 180 / 3.141592653589793;
