@@ -97,7 +97,7 @@ inline void add_options(CLI::App& app, Options& o)
   app.add_option("mesh", o.mesh, "The triangle mesh: OFF, OBJ, PLY or STL (repaired on reading)")->required();
   app.add_option("--out-dir", o.out_dir,
                  "Write charts.ply, atlas.obj, atlas.mtl, patterns.svg, patterns.pdf (when built with cairo), "
-                 "segmentation.svg and report.json into DIR "
+                 "segmentation.svg, viewer.html (when built with three.js) and report.json into DIR "
                  "(created if needed)")
       ->type_name("DIR");
 

@@ -56,6 +56,7 @@ struct Pattern_report
   std::string units;
   bool pdf = false;  // whether patterns.pdf was written too
   double seam_allowance = 0;  // in the drawing's units
+  bool viewer = false;        // whether viewer.html was written
 };
 
 template <class Result, class Mesh>
@@ -116,6 +117,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"notches", p.notches},
                      {"seam_allowance", number(patterns.seam_allowance)},
                      {"pdf", patterns.pdf}};
+    j["viewer"] = patterns.viewer;
     Json steps = Json::array();
     for(std::size_t i = 0; i < p.assembly.size(); ++i)
       steps.push_back({{"step", i + 1},

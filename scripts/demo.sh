@@ -4,7 +4,8 @@
 # the dependencies include), or on the mesh given as first argument; further
 # arguments go to segment_mesh (for instance --size 150mm --tabs).
 # The outputs go to build/demo/: charts.ply, atlas.obj, atlas.mtl,
-# patterns.svg, segmentation.svg and report.json.
+# patterns.svg, patterns.pdf, segmentation.svg, viewer.html (open it in a
+# browser) and report.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh

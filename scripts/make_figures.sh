@@ -3,7 +3,8 @@
 # the segmentations of elephant and bunny00 (pictures of the mesh in its chart colours),
 # the first page of bunny00's sewing pattern (6 mm seam allowance, notches),
 # the true-scale pattern of fandisk (80 mm per mesh unit, with glue tabs), and
-# the net of cube_quad. Run after a build (bash scripts/demo.sh or
+# the net of cube_quad, and (with Chromium) a screenshot of bunny00's
+# viewer.html. Run after a build (bash scripts/demo.sh or
 # bash scripts/test.sh), from any directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,4 +28,9 @@ cp "$tmp/fandisk/patterns.svg" doc/figures/fandisk_patterns.svg
 sed -E '0,/<svg /s/height="[0-9.]+mm" viewBox="0 0 ([0-9.]+) [0-9.]+"/height="297.0000mm" viewBox="0 0 \1 297.0000"/' \
   "$tmp/bunny00_felt/patterns.svg" > doc/figures/bunny00_felt_pattern_page1.svg
 cp "$tmp/cube/patterns.svg" doc/figures/cube_net.svg
+if command -v chromium > /dev/null && [ -f "$tmp/bunny00/viewer.html" ]; then
+  chromium --headless --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader --hide-scrollbars \
+    --window-size=1400,800 --virtual-time-budget=20000 --screenshot="$PWD/doc/figures/bunny00_viewer.png" \
+    "file://$tmp/bunny00/viewer.html" 2> /dev/null
+fi
 ls -l doc/figures

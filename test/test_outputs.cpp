@@ -13,6 +13,7 @@
 #include <CGAL_QD/IO/patterns_pdf.h>
 #endif
 #include <CGAL_QD/IO/segmentation_svg.h>
+#include <CGAL_QD/IO/viewer_html.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 
@@ -21,12 +22,15 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -868,4 +872,257 @@ BOOST_AUTO_TEST_CASE(segmentation_picture_draws_every_face_and_seam)
   Chart_map none;
   BOOST_TEST((QD::IO::write_segmentation_SVG(ss, empty, boost::make_assoc_property_map(none),
                                              std::vector<Surface_mesh::Edge_index>()) == QD::Error_code::EMPTY_MESH));
+}
+
+BOOST_AUTO_TEST_CASE(chart_palette_tells_neighbouring_charts_apart)
+{
+  // a torus cut into 12 x 6 blocks (72 charts, 4 neighbours each), and the segmented meshes
+  std::vector<std::pair<const Surface_mesh*, Chart_map>> cases;
+  static const Surface_mesh blocks = make<Surface_mesh>(torus(48, 24));
+  Chart_map block_chart;
+  std::size_t k = 0;
+  for(auto f : faces(blocks)) {
+    const std::size_t grid = k / 2, i = grid % 48, j = grid / 48;  // two triangles per grid square
+    block_chart[f] = (j / 4) * 12 + i / 4;
+    ++k;
+  }
+  cases.emplace_back(&blocks, block_chart);
+  for(const Segmented& s : meshes()) cases.emplace_back(&s.tm, s.chart);
+  for(const auto& c : cases) {
+    const auto palette = QD::IO::chart_palette(*c.first, boost::make_assoc_property_map(c.second));
+    std::size_t n = 0;
+    for(const auto& fc : c.second) n = (std::max)(n, fc.second + 1);
+    BOOST_REQUIRE(palette.size() == n);
+    std::set<std::array<unsigned char, 3>> used(palette.begin(), palette.end());
+    BOOST_TEST(used.size() == (std::min)(n, QD::IO::palette_colors().size()));  // every colour is used
+    std::size_t pairs = 0;
+    for(auto h : halfedges(*c.first)) {
+      if(is_border_edge(h, *c.first)) continue;
+      const std::size_t a = c.second.at(face(h, *c.first)), b = c.second.at(face(opposite(h, *c.first), *c.first));
+      if(a == b) continue;
+      ++pairs;
+      // neighbours differ clearly
+      BOOST_TEST(QD::internal::color_distance2(palette[a], palette[b]) >= 120. * 120.);
+    }
+    BOOST_TEST(pairs > 0u);
+    // the same charts give the same colours
+    BOOST_TEST((QD::IO::chart_palette(*c.first, boost::make_assoc_property_map(c.second)) == palette));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(segmentation_picture_is_seen_from_where_most_charts_show)
+{
+  // a box whose bottom (y = 0) is cut into 3 x 3 charts and the rest is one:
+  // from above (the default direction) only the one chart shows
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::size_t> chart;
+  const std::size_t n = 6;
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side) {
+      const std::size_t first = points.size();
+      for(std::size_t j = 0; j <= n; ++j)
+        for(std::size_t i = 0; i <= n; ++i) {
+          std::array<double, 3> p;
+          p[axis] = side;
+          p[(axis + 1) % 3] = double(i) / n;
+          p[(axis + 2) % 3] = double(j) / n;
+          points.push_back(p);
+        }
+      for(std::size_t j = 0; j < n; ++j)
+        for(std::size_t i = 0; i < n; ++i) {
+          const std::size_t a = first + j * (n + 1) + i;
+          const std::size_t id = axis == 1 && side == 0 ? 1 + (j / 2) * 3 + i / 2 : 0;
+          triangles.push_back({{a, a + 1, a + n + 2}});
+          triangles.push_back({{a, a + n + 2, a + n + 1}});
+          chart.insert(chart.end(), 2, id);
+        }
+    }
+  const QD::internal::View_angles from_above;
+  auto seen = [&](const QD::internal::View_angles& v) {
+    std::size_t count = 0;
+    for(std::size_t p : QD::internal::visible_chart_pixels(points, triangles, chart, 10, v, 160)) count += p >= 3;
+    return count;
+  };
+  BOOST_TEST(seen(from_above) == 1u);
+  const QD::internal::View_angles chosen = QD::internal::view_showing_most_charts(points, triangles, chart, 10, from_above);
+  BOOST_TEST(chosen.elevation < 0);  // from below
+  BOOST_TEST(seen(chosen) >= 10u);
+  // the picture follows: the bottom's nine charts in their palette colours among the faces drawn last
+  Surface_mesh box;
+  std::vector<Surface_mesh::Vertex_index> vs;
+  for(const auto& p : points) vs.push_back(box.add_vertex(Epick::Point_3(p[0], p[1], p[2])));
+  Chart_map box_chart;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    box_chart[box.add_face(vs[triangles[t][0]], vs[triangles[t][1]], vs[triangles[t][2]])] = chart[t];
+  std::stringstream ss;
+  BOOST_REQUIRE((QD::IO::write_segmentation_SVG(ss, box, boost::make_assoc_property_map(box_chart),
+                                                std::vector<Surface_mesh::Edge_index>()) == QD::Error_code::OK));
+  QD::IO::Picture_options fixed;
+  fixed.choose_view = false;
+  std::stringstream fixed_ss;
+  BOOST_REQUIRE((QD::IO::write_segmentation_SVG(fixed_ss, box, boost::make_assoc_property_map(box_chart),
+                                                std::vector<Surface_mesh::Edge_index>(), fixed) == QD::Error_code::OK));
+  BOOST_TEST(ss.str() != fixed_ss.str());
+}
+
+namespace {
+
+std::vector<unsigned char> from_base64(const std::string& text)
+{
+  std::vector<unsigned char> out;
+  unsigned value = 0;
+  int bits = 0;
+  for(char c : text) {
+    const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* at = c ? std::strchr(table, c) : nullptr;
+    if(!at) continue;  // '=' padding
+    value = (value << 6) | unsigned(at - table);
+    bits += 6;
+    if(bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<unsigned char>((value >> bits) & 255));
+    }
+  }
+  return out;
+}
+
+template <class T>
+std::vector<T> typed(const std::string& text)
+{
+  const std::vector<unsigned char> bytes = from_base64(text);
+  std::vector<T> v(bytes.size() / sizeof(T));
+  std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
+  return v;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(viewer_page_holds_the_mesh_and_its_pieces_at_true_scale)
+{
+  QD::IO::Viewer_options options;
+  options.three_js = "var THREE = {};";  // the page's structure is checked here, the drawing in a browser
+  options.three_js_license = "licence";
+  for(const Segmented& s : meshes()) {
+    std::stringstream ss;
+    BOOST_REQUIRE((QD::IO::write_viewer_HTML(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result, options) ==
+                   QD::Error_code::OK));
+    const std::string page = ss.str();
+    BOOST_TEST(page.find(options.three_js) != std::string::npos);
+    BOOST_TEST(page.find("licence") != std::string::npos);
+    const std::string open = "<script type=\"application/json\" id=\"qd-data\">";
+    const std::size_t from = page.find(open) + open.size(), to = page.find("</script>", from);
+    BOOST_REQUIRE(from != std::string::npos + open.size());
+    std::stringstream json(page.substr(from, to - from));
+    boost::property_tree::ptree data;
+    BOOST_REQUIRE_NO_THROW(boost::property_tree::read_json(json, data));
+    const std::size_t nf = num_faces(s.tm), n = s.result.number_of_charts;
+    BOOST_TEST(data.get_child("charts").size() == n);
+    BOOST_TEST(data.get_child("palette").size() == n);
+    // the seams as labelled on the pattern
+    std::stringstream svg;
+    const QD::IO::Pattern_result pattern = QD::IO::write_patterns_SVG(svg, s.tm, boost::make_assoc_property_map(s.chart),
+                                                                      s.result.corner_uv, s.result.seam_edges);
+    BOOST_TEST(data.get_child("seams").size() == pattern.seam_labels);
+    // the mesh: every face with its vertices and chart, the points in a unit box
+    const auto positions = typed<float>(data.get<std::string>("positions"));
+    const auto triangles = typed<std::uint32_t>(data.get<std::string>("triangles"));
+    const auto face_chart = typed<std::uint32_t>(data.get<std::string>("face_chart"));
+    const auto flat = typed<float>(data.get<std::string>("flat"));
+    BOOST_REQUIRE(positions.size() == 3 * num_vertices(s.tm));
+    BOOST_REQUIRE(triangles.size() == 3 * nf);
+    BOOST_REQUIRE(face_chart.size() == nf);
+    BOOST_REQUIRE(flat.size() == 6 * nf);
+    for(float x : positions) BOOST_TEST((x >= -0.5f && x <= 0.5f));
+    const double extent = data.get<double>("extent");
+    std::vector<double> area_2d(n, 0.), area_page(n, 0.);
+    for(auto f : faces(s.tm)) {
+      const std::size_t i = f.idx(), k = s.chart.at(f);
+      BOOST_TEST(face_chart[i] == k);
+      std::size_t c = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, s.tm), s.tm)) BOOST_TEST(triangles[3 * i + c++] == target(h, s.tm).idx());
+      const auto& u = s.result.corner_uv;
+      area_2d[k] += std::abs((u[3 * i + 1][0] - u[3 * i][0]) * (u[3 * i + 2][1] - u[3 * i][1]) -
+                             (u[3 * i + 2][0] - u[3 * i][0]) * (u[3 * i + 1][1] - u[3 * i][1])) / 2;
+      const float* q = &flat[6 * i];
+      area_page[k] += std::abs((q[2] - q[0]) * (q[5] - q[1]) - (q[4] - q[0]) * (q[3] - q[1])) / 2 * extent * extent;
+    }
+    // true scale: every piece keeps the area of its flattening
+    for(std::size_t k = 0; k < n; ++k) BOOST_TEST(area_page[k] == area_2d[k], tt::tolerance(1e-4));
+    // the two sides of every seam: their flat lengths are those of the flattening
+    double total = 0, sides = 0;
+    for(const auto& seam : data.get_child("seams")) {
+      total += seam.second.get<double>("length");
+      for(const auto& side : seam.second.get_child("sides")) sides += side.second.get_value<double>();
+    }
+    BOOST_TEST(total == s.result.seam_length, tt::tolerance(1e-9));
+    BOOST_TEST(sides == 2 * s.result.seam_length, tt::tolerance(0.05));  // LPFB keeps border lengths
+  }
+}
+
+BOOST_AUTO_TEST_CASE(viewer_page_refuses_bad_input_and_writes_nothing)
+{
+  const Segmented& s = meshes().front();
+  const auto chart = boost::make_assoc_property_map(s.chart);
+  QD::IO::Viewer_options options;
+  options.three_js = "var THREE = {};";
+  auto write = [&](const Surface_mesh& tm, const QD::Chart_flattening_result<Surface_mesh>& f,
+                   const QD::IO::Viewer_options& o, std::string& out) {
+    std::stringstream ss;
+    Chart_map none;
+    const QD::Error_code code = &tm == &s.tm ? QD::IO::write_viewer_HTML(ss, tm, chart, f, o)
+                                             : QD::IO::write_viewer_HTML(ss, tm, boost::make_assoc_property_map(none), f, o);
+    out = ss.str();
+    return code;
+  };
+  std::string out;
+  QD::IO::Viewer_options no_three = options;
+  no_three.three_js.clear();
+  BOOST_TEST((write(s.tm, s.result, no_three, out) == QD::Error_code::INVALID_ARGUMENT));
+  BOOST_TEST(out.empty());
+  QD::IO::Viewer_options closing = options;
+  closing.three_js = "var a = '</script>';";
+  BOOST_TEST((write(s.tm, s.result, closing, out) == QD::Error_code::INVALID_ARGUMENT));
+  BOOST_TEST(out.empty());
+  closing = options;
+  closing.three_js_license = "MIT -->";
+  BOOST_TEST((write(s.tm, s.result, closing, out) == QD::Error_code::INVALID_ARGUMENT));
+  BOOST_TEST(out.empty());
+  QD::Chart_flattening_result<Surface_mesh> short_uv = s.result;
+  short_uv.corner_uv.pop_back();
+  BOOST_TEST((write(s.tm, short_uv, options, out) == QD::Error_code::INVALID_COORDINATES));
+  BOOST_TEST(out.empty());
+  QD::Chart_flattening_result<Surface_mesh> nan_uv = s.result;
+  nan_uv.corner_uv[5][1] = std::numeric_limits<double>::quiet_NaN();
+  BOOST_TEST((write(s.tm, nan_uv, options, out) == QD::Error_code::INVALID_COORDINATES));
+  BOOST_TEST(out.empty());
+  const Surface_mesh empty;
+  BOOST_TEST((write(empty, QD::Chart_flattening_result<Surface_mesh>(), options, out) == QD::Error_code::EMPTY_MESH));
+  BOOST_TEST(out.empty());
+  Surface_mesh quad;
+  quad.add_face(quad.add_vertex(Epick::Point_3(0, 0, 0)), quad.add_vertex(Epick::Point_3(1, 0, 0)), quad.add_vertex(Epick::Point_3(1, 1, 0)),
+                quad.add_vertex(Epick::Point_3(0, 1, 0)));
+  QD::Chart_flattening_result<Surface_mesh> quad_uv;
+  quad_uv.corner_uv.assign(3, {{0., 0.}});
+  BOOST_TEST((write(quad, quad_uv, options, out) == QD::Error_code::NOT_TRIANGLE_MESH));
+  BOOST_TEST(out.empty());
+  // a stream that fails
+  std::ofstream closed;
+  BOOST_TEST((QD::IO::write_viewer_HTML(closed, s.tm, chart, s.result, options) == QD::Error_code::CANNOT_WRITE));
+  // huge coordinates: the page's points stay finite, in the unit box
+  Surface_mesh huge = s.tm;
+  for(auto v : vertices(huge)) {
+    const Epick::Point_3 p = huge.point(v);
+    huge.point(v) = Epick::Point_3(p.x() * 1e200, p.y() * 1e200, p.z() * 1e200);
+  }
+  Chart_map huge_chart;
+  auto fh = faces(huge).begin();
+  for(auto f : faces(s.tm)) huge_chart[*fh++] = s.chart.at(f);
+  std::stringstream ss;
+  BOOST_REQUIRE((QD::IO::write_viewer_HTML(ss, huge, boost::make_assoc_property_map(huge_chart), s.result, options) ==
+                 QD::Error_code::OK));
+  const std::string page = ss.str();
+  const std::string key = "\"positions\":\"";
+  const std::size_t at = page.find(key) + key.size();
+  for(float x : typed<float>(page.substr(at, page.find('"', at) - at))) BOOST_TEST((std::isfinite(x) && std::abs(x) <= 0.5f));
 }

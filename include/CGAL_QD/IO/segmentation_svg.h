@@ -6,10 +6,12 @@
 
 /// \file IO/segmentation_svg.h
 /// A picture of a segmented mesh without a 3D viewer: flat-shaded faces in
-/// their chart colours, seams in black, seen from a fixed direction.
+/// their chart colours, seams in black, seen from the direction that shows the
+/// most charts.
 
 #include <CGAL_QD/Error_code.h>
-#include <CGAL_QD/IO/charts_and_atlas.h>
+#include <CGAL_QD/IO/chart_palette.h>
+#include <CGAL_QD/IO/internal/view_choice.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -37,12 +39,17 @@ struct Picture_options
   double width = 800, height = 800;  ///< the picture, in pixels
   double azimuth = 0.6;    ///< the view direction: turn about the mesh's y axis, taken as up (radians)
   double elevation = 0.35; ///< and above the horizontal plane (radians)
+  /// whether the writer chooses the view instead: of the direction above and 18 others around the mesh
+  /// (8 turns about y at 35 degrees above and below the horizontal, straight from above and below), the
+  /// one from which the most charts can be seen
+  bool choose_view = true;
 };
 
 /// \ingroup PkgCGAL_QDRef
-/// draws `tm` as seen from the direction of `options` (orthographic, y up,
-/// fitted to the picture): every face flat-shaded in `chart_color()` of its
-/// chart, by a light from the viewer, back faces darker; the faces are sorted
+/// draws `tm` as seen from the direction of `options`, or the one that shows the
+/// most charts (orthographic, y up, fitted to the picture): every face
+/// flat-shaded in its chart's colour of `chart_palette()` (charts that share a
+/// border differ), by a light from the viewer, back faces darker; the faces are sorted
 /// back to front by the depth of their centroid and drawn in that order
 /// (painter's algorithm), each followed by its seam edges in black, so nearer
 /// faces hide farther seams.
@@ -75,12 +82,24 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
   // the mesh's y axis is up (as in most scanned models); view frame: x right,
   // y up, z toward the viewer. Turn about y by the azimuth, then tilt about x
   // by the elevation (a positive one looks from above).
-  const double ca = std::cos(options.azimuth), sa = std::sin(options.azimuth), ce = std::cos(options.elevation),
-               se = std::sin(options.elevation);
-  auto view = [&](const P& p) {
-    const double x = ca * p[0] + sa * p[2], z = -sa * p[0] + ca * p[2];
-    return P{{x, ce * p[1] - se * z, se * p[1] + ce * z}};
-  };
+  internal::View_angles angles{options.azimuth, options.elevation};
+  const std::vector<std::array<unsigned char, 3>> palette = chart_palette(tm, face_chart);
+  if(options.choose_view) {
+    std::vector<P> points(num_vertices(tm));
+    for(auto v : vertices(tm)) points[get(vim, v)] = internal::point_of<TriangleMesh>(v, vpm);
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<std::size_t> chart;
+    for(face_descriptor f : faces(tm)) {
+      std::vector<std::size_t> c;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) c.push_back(get(vim, v));
+      for(std::size_t k = 1; k + 1 < c.size(); ++k) {  // a fan over a polygon
+        triangles.push_back({{c[0], c[k], c[k + 1]}});
+        chart.push_back(static_cast<std::size_t>(get(face_chart, f)));
+      }
+    }
+    angles = internal::view_showing_most_charts(points, triangles, chart, palette.size(), angles);
+  }
+  auto view = [&](const P& p) { return angles.point(p); };
   std::vector<P> q(num_vertices(tm));
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for(auto v : vertices(tm)) {
@@ -127,7 +146,7 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
     const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const double facing = l > 0 ? n[2] / l : 0;  // the light comes from the viewer
     const double shade = facing >= 0 ? 0.35 + 0.65 * facing : 0.25 + 0.2 * -facing;
-    const std::array<unsigned char, 3> base = chart_color(static_cast<std::size_t>(get(face_chart, it.f)));
+    const std::array<unsigned char, 3> base = palette[static_cast<std::size_t>(get(face_chart, it.f))];
     std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", int(base[0] * shade), int(base[1] * shade),
                   int(base[2] * shade));
     const std::string color = buffer;

@@ -13,6 +13,7 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/IO/internal/assembly_order.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
+#include <CGAL_QD/IO/internal/seam_labels.h>
 #include <CGAL_QD/IO/pattern_options.h>
 #ifdef CGAL_QD_HAS_CLIPPER
 #include <CGAL_QD/IO/internal/seam_allowance.h>
@@ -141,7 +142,6 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename GT::edge_descriptor edge_descriptor;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef std::array<double, 2> P2;
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 
@@ -280,22 +280,11 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   if(!(line > 0)) line = 0.25 * mm;  // only pieces without area
 
   // ---- seam curves: connected seam edges with the same pair of charts, in order along the curve
-  std::vector<halfedge_descriptor> seam_halfedges;
-  for(edge_descriptor e : seam)
-    if(!is_border_edge(halfedge(e, tm), tm)) seam_halfedges.push_back(halfedge(e, tm));
-  // a curve also ends where the two charts on its sides change
   auto pair_of = [&](halfedge_descriptor h) {
     const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
     return std::make_pair((std::min)(a, b), (std::max)(a, b));
   };
-  auto pair_changes = [&](vertex_descriptor v) {
-    std::set<std::pair<std::size_t, std::size_t>> pairs;
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
-      if(seam.count(edge(h, tm)) && !is_border_edge(h, tm)) pairs.insert(pair_of(h));
-    return pairs.size() > 1;
-  };
-  std::vector<std::vector<halfedge_descriptor>> curves;
-  for(auto& c : internal::seam_curves(tm, seam_halfedges, vim, him, pair_changes)) curves.push_back(std::move(c.halfedges));
+  const std::vector<std::vector<halfedge_descriptor>> curves = internal::labelled_seam_curves(tm, chart, seam, fim, vim, him);
   // the sides of every curve to label: the halfedge of the curve's middle edge (by 3D
   // length) and its opposite, each in the face whose chart it labels
   std::vector<std::vector<std::pair<halfedge_descriptor, std::size_t>>> labels_of_chart(n);
