@@ -4,7 +4,9 @@
 # screenshot is not blank and shows at least MIN_COLOURS of the charts'
 # colours (each over at least 200 pixels; the flat pieces on the right are
 # drawn unlit, in exactly those colours). PYTHON reads the screenshot
-# (png_colours.py).
+# (png_colours.py). With PROBE, a copy of the page with viewer_probe.js points
+# at both views on a grid, and every piece must be named on the flat side, a
+# seam named, and a clicked piece kept while the pointer moves on.
 
 file(REMOVE_RECURSE "${WORK_DIR}")
 execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}" RESULT_VARIABLE code
@@ -49,4 +51,34 @@ if(drawn LESS tenth)
 endif()
 if(colours LESS MIN_COLOURS)
   message(FATAL_ERROR "the screenshot shows ${colours} chart colours, fewer than ${MIN_COLOURS}")
+endif()
+
+if(PROBE)
+  file(READ "${CMAKE_CURRENT_LIST_DIR}/viewer_probe.js" probe)
+  file(READ "${WORK_DIR}/viewer.html" page)
+  string(REPLACE "</body>" "<script>${probe}</script></body>" page "${page}")
+  file(WRITE "${WORK_DIR}/probe.html" "${page}")
+  execute_process(COMMAND ${browser} --dump-dom "file://${WORK_DIR}/probe.html" RESULT_VARIABLE code
+                  OUTPUT_VARIABLE dom ERROR_VARIABLE err TIMEOUT 240)
+  string(REGEX MATCH "<body[^>]*>" body "${dom}")
+  string(REGEX REPLACE "data-palette=\"[^\"]*\" " "" shown "${body}")
+  message(STATUS "pointing: ${shown}")
+  string(REGEX MATCH "data-charts=\"([0-9]+)\"" _ "${body}")
+  set(charts ${CMAKE_MATCH_1})
+  string(REGEX MATCH "data-pieces-right=\"([0-9]+)\"" _ "${body}")
+  set(right ${CMAKE_MATCH_1})
+  string(REGEX MATCH "data-pieces-left=\"([0-9]+)\"" _ "${body}")
+  set(left ${CMAKE_MATCH_1})
+  if(NOT body MATCHES "data-probe=\"done\"" OR NOT body MATCHES "data-errors=\"0\"")
+    message(FATAL_ERROR "pointing at the page failed: ${shown}")
+  endif()
+  if(NOT right EQUAL charts OR left LESS 1)
+    message(FATAL_ERROR "pointing named ${right} of ${charts} pieces on the flat side, ${left} on the mesh")
+  endif()
+  if(NOT body MATCHES "data-seam=\"[A-Z][0-9]* (between pieces|a cut inside piece)")
+    message(FATAL_ERROR "pointing named no seam: ${shown}")
+  endif()
+  if(NOT body MATCHES "data-pinned=\"kept\"")
+    message(FATAL_ERROR "a clicked piece was not kept: ${shown}")
+  endif()
 endif()
