@@ -8,7 +8,8 @@
 // and the script that draws the data of the page with three.js (the global
 // THREE of its UMD build). The script reads the JSON in the element
 // #qd-data, renders the mesh (left) and the flattened pieces (right) on
-// demand, and highlights a piece or a seam on both sides under the pointer.
+// demand, and highlights a piece or a seam on both sides under the pointer
+// (the piece ids are drawn into an offscreen buffer once per camera position).
 // For tests, <body> gets data-status="ready" once both sides are drawn, and
 // data-errors with the number of errors and console errors seen.
 
@@ -159,7 +160,8 @@ inline const char* viewer_script()
     pickScene.add(new THREE.Mesh(geometry, new THREE.ShaderMaterial({
       vertexShader: vertexShader, fragmentShader: pickShader, side: THREE.DoubleSide })));
     return { container: container, renderer: renderer, scene: scene, pickScene: pickScene, material: material,
-             lineMaterial: lineMat, target: new THREE.WebGLRenderTarget(1, 1), camera: null };
+             lineMaterial: lineMat, target: new THREE.WebGLRenderTarget(1, 1), camera: null, pickKey: '',
+             pickIds: null };
   }
 
   const left = makeView(document.getElementById('left'), true, faceGeometry(pos3), lineGeometry(segments(S3, 3), S3id));
@@ -218,19 +220,30 @@ inline const char* viewer_script()
     if (document.body.dataset.status !== 'ready') document.body.dataset.status = 'ready';
   }
 
-  // ---- what is under the pointer: a piece (drawn by id into one pixel), or a seam within 6 pixels
+  // ---- what is under the pointer: a piece, read from the piece ids drawn into
+  // a buffer of the view's size once per camera position (so pointing costs
+  // nothing until the view turns, moves or zooms), or a seam within 6 pixels
   function pickChart(v, x, y) {
-    const w = v.container.clientWidth, h = v.container.clientHeight, pixel = new Uint8Array(4);
-    v.camera.setViewOffset(w, h, x, y, 1, 1);
-    v.renderer.setRenderTarget(v.target);
-    v.renderer.setClearColor(0x000000, 1);
-    v.renderer.clear();
-    v.renderer.render(v.pickScene, v.camera);
-    v.renderer.readRenderTargetPixels(v.target, 0, 0, 1, 1, pixel);
-    v.renderer.setRenderTarget(null);
-    v.renderer.setClearColor(0xffffff, 1);
-    v.camera.clearViewOffset();
-    const id = pixel[0] + 256 * pixel[1] + 65536 * pixel[2] - 1;
+    const w = v.container.clientWidth, h = v.container.clientHeight;
+    const key = w + ' ' + h + ' ' + v.camera.matrixWorld.elements.join(' ') + ' ' +
+                v.camera.projectionMatrix.elements.join(' ');
+    if (v.pickKey !== key) {
+      v.pickKey = key;
+      v.target.setSize(w, h);
+      v.renderer.setRenderTarget(v.target);
+      v.renderer.setClearColor(0x000000, 1);
+      v.renderer.clear();
+      v.renderer.render(v.pickScene, v.camera);
+      v.pickIds = new Uint8Array(4 * w * h);
+      v.renderer.readRenderTargetPixels(v.target, 0, 0, w, h, v.pickIds);
+      v.renderer.setRenderTarget(null);
+      v.renderer.setClearColor(0xffffff, 1);
+    }
+    x = Math.floor(x);
+    y = Math.floor(y);
+    if (x < 0 || y < 0 || x >= w || y >= h) return -1;
+    const at = 4 * ((h - 1 - y) * w + x), ids = v.pickIds;
+    const id = ids[at] + 256 * ids[at + 1] + 65536 * ids[at + 2] - 1;
     return id >= 0 && id < n ? id : -1;
   }
   const projected = new THREE.Vector3();
