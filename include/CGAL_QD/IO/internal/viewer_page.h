@@ -104,6 +104,18 @@ inline const char* viewer_script()
     '  else gl_FragColor = vec4(0.12, 0.12, 0.12, 1.0);',
     '}'].join('\n');
 
+  // the highlighted seam also as round dots at its vertices: a line is one pixel wide in WebGL
+  const dotVertex = [
+    'attribute float seam;', 'uniform float uSeam;', 'varying float vSeam;',
+    'void main() {', '  vSeam = seam;', '  gl_PointSize = abs(seam - uSeam) < 0.5 ? 7.0 : 0.0;',
+    '  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);', '}'].join('\n');
+  const dotShader = [
+    'uniform float uSeam;', 'varying float vSeam;',
+    'void main() {',
+    '  vec2 d = gl_PointCoord - vec2(0.5);',
+    '  if (abs(vSeam - uSeam) > 0.5 || dot(d, d) > 0.25) discard;',
+    '  gl_FragColor = vec4(0.85, 0.1, 0.1, 1.0);',
+    '}'].join('\n');
   function chartMaterial(lit) {
     return new THREE.ShaderMaterial({
       uniforms: { uPalette: { value: palette }, uSize: { value: new THREE.Vector2(texWidth, texHeight) },
@@ -157,6 +169,9 @@ inline const char* viewer_script()
     const material = chartMaterial(lit), lineMat = lineMaterial();
     scene.add(new THREE.Mesh(geometry, material));
     scene.add(new THREE.LineSegments(lines, lineMat));
+    const dotMat = new THREE.ShaderMaterial({ uniforms: { uSeam: lineMat.uniforms.uSeam }, vertexShader: dotVertex,
+                                              fragmentShader: dotShader, depthTest: lit });
+    scene.add(new THREE.Points(lines, dotMat));
     pickScene.add(new THREE.Mesh(geometry, new THREE.ShaderMaterial({
       vertexShader: vertexShader, fragmentShader: pickShader, side: THREE.DoubleSide })));
     return { container: container, renderer: renderer, scene: scene, pickScene: pickScene, material: material,
