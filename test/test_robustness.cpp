@@ -24,6 +24,8 @@
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -319,6 +321,13 @@ BOOST_AUTO_TEST_CASE(reader_names_every_malformed_file)
   BOOST_TEST(status(scratch.write("u.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quux x\nend_header\n0\n")) ==
              QD::Error_code::INVALID_FILE);
   BOOST_TEST(status(scratch.write("h.ply", "ply\nformat ascii 1.0\nelement vertex 1\n")) == QD::Error_code::INVALID_FILE);
+  // the fuzzer's find: a second format line, which CGAL's reader ignores
+  BOOST_TEST(status(scratch.write("f.ply", "ply\nformat binary_little_endian 1.0\nformat ascii 1.0\n" +
+                                               ply_header.substr(ply_header.find("element")) +
+                                               "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n")) == QD::Error_code::INVALID_FILE);
+  BOOST_TEST(status(scratch.write("f2.ply", "ply\ncomment first\nformat ascii 1.0\n" +
+                                                ply_header.substr(ply_header.find("element")) +
+                                                "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n")) == QD::Error_code::INVALID_FILE);
   {
     std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                          "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
@@ -326,6 +335,41 @@ BOOST_AUTO_TEST_CASE(reader_names_every_malformed_file)
     binary += std::string("\xff\xff\xff\x7f", 4); // 2^31 - 1 indices announced
     binary += std::string(12, '\0');
     BOOST_TEST(status(scratch.write("b.ply", binary)) == QD::Error_code::INVALID_FILE);
+  }
+  // binary OFF: a good file, and the counts and sizes the file cannot hold
+  {
+    auto be = [](std::int32_t v) {
+      const std::uint32_t u = static_cast<std::uint32_t>(v);
+      return std::string{char(u >> 24), char((u >> 16) & 255), char((u >> 8) & 255), char(u & 255)};
+    };
+    auto bf = [&](float f) {
+      std::int32_t i;
+      std::memcpy(&i, &f, 4);
+      return be(i);
+    };
+    auto file = [&](std::int32_t nv, std::int32_t nf, std::int32_t k, std::int32_t colours) {
+      std::string b = "OFF BINARY\n" + be(nv) + be(nf) + be(0);
+      for(float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f}) b += bf(c);
+      b += be(k) + be(0) + be(1) + be(2) + be(colours);
+      return b;
+    };
+    BOOST_TEST(status(scratch.write("ok_binary.off", file(3, 1, 3, 0))) == QD::Error_code::OK);
+    BOOST_TEST(ps.size() == 3u);
+    BOOST_TEST(fs.size() == 1u);
+    BOOST_TEST(status(scratch.write("nv_binary.off", file(2000000000, 1, 3, 0))) == QD::Error_code::INVALID_FILE);
+    BOOST_TEST(status(scratch.write("nvneg_binary.off", file(-3, 1, 3, 0))) == QD::Error_code::INVALID_FILE);
+    std::string edges = file(3, 1, 3, 0);
+    edges.replace(19, 4, be(1073761590));  // the edge count, which CGAL's reader doubles in an int
+    BOOST_TEST(status(scratch.write("ne_binary.off", edges)) == QD::Error_code::INVALID_FILE);
+    BOOST_TEST(status(scratch.write("nf_binary.off", file(3, 2000000000, 3, 0))) == QD::Error_code::INVALID_FILE);
+    BOOST_TEST(status(scratch.write("k_binary.off", file(3, 1, -1, 0))) == QD::Error_code::INVALID_FILE);
+    BOOST_TEST(status(scratch.write("kbig_binary.off", file(3, 1, 2000000000, 0))) == QD::Error_code::INVALID_FILE);
+    BOOST_TEST(status(scratch.write("colour_binary.off", file(3, 1, 3, 7))) == QD::Error_code::INVALID_FILE);
+    BOOST_TEST(message(scratch.write("cut_binary.off", file(3, 1, 3, 0).substr(0, 40))).find("truncated") !=
+               std::string::npos);
+    // the header the fuzzer found: counts whose sum overflowed inside CGAL's reader
+    BOOST_TEST(status(scratch.write("fuzzed_binary.off", std::string("OFF BINARY\nFF\xef" " BI\n\x01\x00" "4 \x15 ", 24))) ==
+               QD::Error_code::INVALID_FILE);
   }
   // STL: garbage and a truncated binary file
   BOOST_TEST(status(scratch.write("g.stl", "solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 zz\n")) ==
@@ -336,6 +380,36 @@ BOOST_AUTO_TEST_CASE(reader_names_every_malformed_file)
     binary += std::string(50, '\0');
     BOOST_TEST(status(scratch.write("t.stl", binary)) == QD::Error_code::INVALID_FILE);
   }
+}
+
+// Inputs the fuzzer of fuzz/ found: each gives a valid triangle mesh or a named error.
+BOOST_AUTO_TEST_CASE(fuzzer_findings_stay_fixed)
+{
+  // an OBJ whose degenerate face, once removed by CGAL, left a border cycle of two edges
+  Surface_mesh tm;
+  const QD::Repair_report r =
+      QD::IO::read_and_repair_mesh(std::string(CGAL_QD_TEST_DATA_DIR) + "/fuzzed_repair_leaves_a_digon.obj", tm);
+  BOOST_REQUIRE_MESSAGE(r, r.message);
+  BOOST_TEST(r.degenerate_faces_removed == 1u);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  BOOST_TEST(CGAL::is_triangle_mesh(tm));
+  BOOST_TEST(num_faces(tm) == 4u);
+  // an OBJ with a pentagon far from planar, which CGAL's triangulation left as an
+  // invalid mesh whose traversal never ended: a fan of three triangles instead
+  const QD::Repair_report p = QD::IO::read_and_repair_mesh(
+      std::string(CGAL_QD_TEST_DATA_DIR) + "/fuzzed_triangulation_leaves_an_invalid_mesh.obj", tm);
+  BOOST_REQUIRE_MESSAGE(p, p.message);
+  BOOST_TEST(p.polygons_triangulated == 1u);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  BOOST_TEST(CGAL::is_triangle_mesh(tm));
+  BOOST_TEST(num_faces(tm) == 3u);
+  // an OBJ whose polygon stops CGAL's constrained triangulation on an assertion
+  // (with assertions on; without them the mesh it leaves is refused as above)
+  const QD::Repair_report a = QD::IO::read_and_repair_mesh(
+      std::string(CGAL_QD_TEST_DATA_DIR) + "/fuzzed_triangulation_fails_an_assertion.obj", tm);
+  BOOST_REQUIRE_MESSAGE(a, a.message);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  BOOST_TEST(CGAL::is_triangle_mesh(tm));
 }
 
 // Random mutations of valid files in every format: the reader and the repair

@@ -17,11 +17,13 @@
 #include <CGAL_QD/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
@@ -333,8 +335,25 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
     const std::size_t before = num_faces(pm);
     for(const auto f : faces(pm))
       if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 3) ++r.polygons_triangulated;
-    if(!PMP::triangulate_faces(pm, np))
-      return fail(Error_code::NOT_TRIANGLE_MESH, "a polygon could not be triangulated");
+    bool triangulated = false;
+    try {
+      triangulated = PMP::triangulate_faces(pm, np);
+    } catch(const CGAL::Failure_exception&) {  // an assertion of its constrained triangulation
+      triangulated = false;
+    }
+    if(!triangulated || !CGAL::is_valid_polygon_mesh(pm) || !CGAL::is_triangle_mesh(pm)) {
+      // CGAL's triangulation can fail on a polygon far from planar, stop on an
+      // assertion, or leave an invalid mesh (all found by the fuzzer of fuzz/):
+      // every polygon becomes a fan of triangles from its first corner instead
+      std::vector<std::vector<std::size_t>> fans;
+      for(const auto& polygon : polygons)
+        for(std::size_t k = 1; k + 1 < polygon.size(); ++k)
+          fans.push_back({std::size_t(polygon[0]), std::size_t(polygon[k]), std::size_t(polygon[k + 1])});
+      CGAL::clear(pm);
+      if(!PMP::is_polygon_soup_a_polygon_mesh(fans))
+        return fail(Error_code::NOT_TRIANGLE_MESH, "a polygon could not be triangulated");
+      PMP::polygon_soup_to_polygon_mesh(points, fans, pm, CGAL::parameters::default_values(), np);
+    }
     r.triangles_added = num_faces(pm) - before;
   }
   r.result = inspect_mesh(pm, np);
@@ -343,6 +362,25 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
     PMP::remove_degenerate_faces(pm, np);
     PMP::remove_isolated_vertices(pm);
     internal::collect_garbage_if_any(pm);
+    if(!CGAL::is_valid_polygon_mesh(pm)) {
+      // CGAL's removal can leave a border cycle of two edges (found by the fuzzer
+      // of fuzz/): the mesh is built again from its faces
+      typedef typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::const_type VPM;
+      std::vector<typename boost::property_traits<VPM>::value_type> mesh_points;
+      std::vector<std::vector<std::size_t>> mesh_polygons;
+      PMP::polygon_mesh_to_polygon_soup(pm, mesh_points, mesh_polygons, np);
+      CGAL::clear(pm);
+      PMP::merge_duplicate_points_in_polygon_soup(mesh_points, mesh_polygons);
+      PMP::merge_duplicate_polygons_in_polygon_soup(mesh_points, mesh_polygons);
+      PMP::remove_isolated_points_in_polygon_soup(mesh_points, mesh_polygons);
+      if(mesh_polygons.empty()) return fail(Error_code::EMPTY_MESH, "every face is degenerate");
+      PMP::orient_polygon_soup(mesh_points, mesh_polygons);
+      if(!PMP::is_polygon_soup_a_polygon_mesh(mesh_polygons))
+        return fail(Error_code::NON_MANIFOLD, "the faces left after removing the degenerate ones are not a manifold mesh");
+      PMP::polygon_soup_to_polygon_mesh(mesh_points, mesh_polygons, pm, CGAL::parameters::default_values(), np);
+      if(!CGAL::is_valid_polygon_mesh(pm))
+        return fail(Error_code::NON_MANIFOLD, "the faces left after removing the degenerate ones are not a valid mesh");
+    }
     r.result = inspect_mesh(pm, np);
     if(r.result.degenerate_faces > 0)
       return fail(Error_code::DEGENERATE_FACE,

@@ -160,6 +160,73 @@ IO::Read_status read_ascii_OFF(std::istream& in, std::vector<Point>& points, std
   return IO::Read_status{};
 }
 
+// Walks a binary OFF file as CGAL's reader will read it (big-endian 32-bit
+// counts, then per vertex its floats, per face "k i_1 ... i_k m c_1 ... c_m"
+// with at most 4 colour floats), checking that the counts are not negative and
+// that every vertex and face fits in the file, so that CGAL's reader never
+// sizes anything from a number the file cannot hold. `size` is the file's size.
+inline IO::Read_status check_binary_OFF_structure(std::istream& in, std::uintmax_t size)
+{
+  auto invalid = [](const std::string& why) { return IO::Read_status{Error_code::INVALID_FILE, why}; };
+  std::string line;
+  std::vector<std::string> words;
+  while(std::getline(in, line)) {
+    words = split_words(line);
+    if(!words.empty() && words[0][0] != '#') break;
+  }
+  if(words.size() < 2 || words[0].size() < 3 || words[0].compare(words[0].size() - 3, 3, "OFF") != 0 ||
+     words[1] != "BINARY")
+    return invalid("the binary OFF header is not '[prefix]OFF BINARY' on a line of its own");
+  const std::string prefix = words[0].substr(0, words[0].size() - 3);
+  bool homogeneous = false, normals = false, colours = false, textures = false;
+  for(std::size_t i = 0; i < prefix.size(); ++i) {
+    if(prefix.compare(i, 2, "ST") == 0) { textures = true; ++i; continue; }
+    if(prefix[i] == 'C') { colours = true; continue; }
+    if(prefix[i] == 'N') { normals = true; continue; }
+    if(prefix[i] == '4') { homogeneous = true; continue; }
+    return invalid("the binary OFF variant '" + words[0] + "' is not supported");
+  }
+  const std::uintmax_t h = homogeneous ? 1 : 0;
+  const std::uintmax_t vertex_bytes =
+      4 * ((3 + h) + (normals ? 3 + h : 0) + (colours ? 3 : 0) + (textures ? 2 + h : 0));
+  auto read_int = [&](std::int32_t& value) {
+    unsigned char b[4];
+    if(!in.read(reinterpret_cast<char*>(b), 4)) return false;
+    value = static_cast<std::int32_t>((std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) |
+                                      (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]));
+    return true;
+  };
+  std::int32_t nv = 0, nf = 0, ne = 0;
+  if(!read_int(nv) || !read_int(nf) || !read_int(ne))
+    return invalid("the binary OFF file ends before its vertex, face and edge counts");
+  // CGAL's reader doubles the edge count in an int: keep it a plausible count
+  if(nv < 0 || nf < 0 || ne < 0 || ne > (1 << 29))
+    return invalid("the binary OFF file announces a negative number of vertices, faces or edges, or too many edges");
+  const std::streamoff at = in.tellg();
+  if(at < 0) return invalid("the binary OFF file cannot be read");
+  std::uintmax_t position = static_cast<std::uintmax_t>(at);
+  if((size - position) / vertex_bytes < std::uintmax_t(nv))
+    return invalid("the binary OFF file is truncated: it announces " + std::to_string(nv) +
+                   " vertices and holds fewer");
+  position += std::uintmax_t(nv) * vertex_bytes;
+  for(std::int32_t i = 0; i < nf; ++i) {
+    std::int32_t k = 0, m = 0;
+    in.seekg(static_cast<std::streamoff>(position));
+    if(size - position < 4 || !read_int(k))
+      return invalid("the binary OFF file is truncated: it announces " + std::to_string(nf) + " faces and holds " +
+                     std::to_string(i));
+    if(k < 1 || k > nv || (size - position - 4) / 4 < std::uintmax_t(k) + 1)
+      return invalid("face " + std::to_string(i) + " of the binary OFF file has " + std::to_string(k) +
+                     " corners, which the file cannot hold");
+    position += 4 + 4 * std::uintmax_t(k);
+    in.seekg(static_cast<std::streamoff>(position));
+    if(!read_int(m) || m < 0 || m > 4 || (size - position - 4) / 4 < std::uintmax_t(m))
+      return invalid("face " + std::to_string(i) + " of the binary OFF file has a malformed colour");
+    position += 4 + 4 * std::uintmax_t(m);
+  }
+  return IO::Read_status{};
+}
+
 // Walks the elements of a PLY file (ASCII or binary) as its header declares
 // them, checking that every element, scalar and list fits in the file, so that
 // CGAL's reader never allocates what the file does not hold.
@@ -180,12 +247,14 @@ inline IO::Read_status check_PLY_structure(std::istream& in)
   std::vector<Element> elements;
   int format = -1; // 0 ascii, 1 little endian, 2 big endian
   bool ended = false;
-  while(std::getline(in, line)) {
+  for(std::size_t number = 2; std::getline(in, line); ++number) {
     if(!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream words(line);
     std::string key;
     words >> key;
     if(key == "end_header") { ended = true; break; }
+    // CGAL's reader takes the format from the second line and from no other
+    if((key == "format") != (number == 2)) return invalid("the PLY format must be given on the second line, once");
     if(key == "format") {
       std::string f;
       words >> f;
@@ -283,9 +352,8 @@ namespace IO {
 /// extension in any letter case), checking the file's structure first.
 ///
 /// ASCII OFF is read here, one vertex or face per line; binary OFF, OBJ, PLY
-/// and STL by CGAL's readers, PLY after a walk over its declared elements.
-/// Binary OFF is not checked first: a corrupt face size there reaches CGAL's
-/// reader as it is.
+/// and STL by CGAL's readers, binary OFF and PLY after a walk over their
+/// declared vertices and faces that checks that the file holds them.
 /// NaN and infinite coordinates are read as such; indices are not checked
 /// against the number of points (`repair_polygon_soup_to_mesh()` does).
 ///
@@ -325,7 +393,10 @@ Read_status read_polygon_soup(const std::string& filename, std::vector<Point>& p
       in.clear();
       in.seekg(0);
       if(std::find(words.begin(), words.end(), "BINARY") != words.end()) {
-        if(!CGAL::IO::read_OFF(in, points, polygons))
+        s = internal::check_binary_OFF_structure(in, size);
+        in.clear();
+        in.seekg(0);
+        if(s && !CGAL::IO::read_OFF(in, points, polygons))
           s = Read_status{Error_code::INVALID_FILE, "the binary OFF file is truncated or malformed"};
       }
       else

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Fuzzes the mesh readers (fuzz/fuzz_read_mesh.cpp) with libFuzzer under
+# AddressSanitizer and UndefinedBehaviorSanitizer: read_polygon_soup() on OFF,
+# OBJ, PLY and STL files, and read_and_repair_mesh(), each for SECONDS seconds
+# (default 60) from the seed corpus in fuzz/corpus/. Installs clang and its
+# runtime (Debian's clang and libclang-rt-14-dev) if needed. A finding stops
+# the script with the fuzzer's report; the input that caused it is kept in
+# build-fuzz/ (crash-*, oom-*, timeout-*), to be fixed and added to the tests.
+# usage: bash scripts/fuzz.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${SECONDS_PER_TARGET:-${1:-60}}
+if ! command -v clang++ > /dev/null || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "install ok installed"; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update
+  apt-get install -y --no-install-recommends clang libclang-rt-14-dev
+fi
+out=build-fuzz
+mkdir -p "$out"
+clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+  -Iinclude fuzz/fuzz_read_mesh.cpp -o "$out/fuzz_read_mesh" -lgmp -lmpfr
+for mode in off obj ply stl repair; do
+  # the corpus grows in build-fuzz/, the seeds stay as they are
+  mkdir -p "$out/corpus_$mode"
+  cp fuzz/corpus/$mode/* "$out/corpus_$mode/"
+  echo "fuzz: $mode for $seconds s"
+  (cd "$out" && TMPDIR="$PWD" QD_FUZZ_FORMAT=$mode ./fuzz_read_mesh -max_total_time="$seconds" -rss_limit_mb=2048 \
+     -timeout=10 -print_final_stats=1 -artifact_prefix="$mode-" "corpus_$mode" > "fuzz_$mode.log" 2>&1) || {
+    tail -60 "$out/fuzz_$mode.log"
+    echo "fuzz: $mode found a problem; the input is in $out/" >&2
+    exit 1
+  }
+  grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$out/fuzz_$mode.log" | tr '\n' ' '
+  echo
+done
