@@ -6,6 +6,9 @@
 #include <boost/mpl/list.hpp>
 
 #include "mesh_generators.h"
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 #include "resolution_series.h"
 #include "test_utils.h"
 
@@ -582,6 +585,15 @@ BOOST_AUTO_TEST_CASE(deterministic_and_parallel_equals_sequential)
   BOOST_TEST((ra.seam_edges == rc.seam_edges));
 #ifdef CGAL_LINKED_WITH_TBB
   BOOST_TEST_MESSAGE("parallel trials: " << ra.time_merge_ms << " ms sequential, " << rc.time_merge_ms << " ms parallel");
+  // the same charts with TBB limited to 1, 2 and 8 threads
+  for(std::size_t threads : {1, 2, 8}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    Chart_map<Surface_mesh> d;
+    const auto rd = QD::segment_quasi_developable<CGAL::Parallel_tag>(tm, boost::make_assoc_property_map(d));
+    BOOST_REQUIRE(rd);
+    BOOST_TEST((a == d), threads << " threads");
+    BOOST_TEST((ra.corner_uv == rd.corner_uv), threads << " threads");
+  }
 #endif
   expect_valid_segmentation(tm, a, ra);
 }
