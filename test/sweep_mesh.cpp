@@ -36,6 +36,8 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+
+#include <sys/resource.h>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -85,8 +87,8 @@ int main(int argc, char** argv)
 {
   if(argc == 2 && std::string(argv[1]) == "--header") {
     std::cout << "| mesh | faces | repairs | patch faces | loops | flattening | A % | L² | flips | overlap | Π_L | "
-                 "flatten s | segmentation | charts | max A % | max L² | overlapping | segment s | total s | targets |\n"
-              << "|---|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
+                 "flatten s | segmentation | charts | max A % | max L² | overlapping | segment s | total s | peak MB | targets |\n"
+              << "|---|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
     return EXIT_SUCCESS;
   }
   if(argc != 2) {
@@ -104,7 +106,7 @@ int main(int argc, char** argv)
     if(!input) {
       row << "| " << name << " | – | " << input.message << " | – | – | – | – | – | – | – | – | – | "
           << CGAL_QD::error_message(input.status) << " | – | – | – | – | – | " << fixed(elapsed_ms(start) / 1000, 2)
-          << " | met |";
+          << " | – | met |";
       std::cout << row.str() << "\n";
       return EXIT_SUCCESS;
     }
@@ -161,6 +163,10 @@ int main(int argc, char** argv)
     return 2;
   }
   row << fixed(elapsed_ms(start) / 1000, 2) << " | ";
+  // the process's peak resident memory: reading, the patch's flattening and the segmentation
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  row << fixed(double(usage.ru_maxrss) / 1024, 0) << " | ";
   if(missed.empty()) row << "met |";
   else {
     row << "**missed:";
