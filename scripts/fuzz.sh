@@ -3,10 +3,12 @@
 # AddressSanitizer and UndefinedBehaviorSanitizer: read_polygon_soup() on OFF,
 # OBJ, PLY and STL files, and read_and_repair_mesh(), each for SECONDS seconds
 # (default 60) from the seed corpus in fuzz/corpus/. Installs clang and its
-# runtime (Debian's clang and libclang-rt-14-dev) if needed. A finding stops
-# the script with the fuzzer's report; the input that caused it is kept in
-# build-fuzz/ (crash-*, oom-*, timeout-*), to be fixed and added to the tests.
-# usage: bash scripts/fuzz.sh [SECONDS]
+# runtime (Debian's clang and libclang-rt-14-dev) if needed. A finding prints
+# the fuzzer's report, and the input that caused it is kept in build-fuzz/
+# (<mode>-crash-*, -oom-*, -timeout-*), to be fixed and added to the tests;
+# the other modes still run, and the script then fails, unless FUZZ_FATAL=0
+# (as in .ci/run, while the open findings of doc/robustness.md remain).
+# usage: [FUZZ_FATAL=0] bash scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${SECONDS_PER_TARGET:-${1:-60}}
@@ -19,6 +21,7 @@ out=build-fuzz
 mkdir -p "$out"
 clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
   -Iinclude fuzz/fuzz_read_mesh.cpp -o "$out/fuzz_read_mesh" -lgmp -lmpfr
+found=""
 for mode in off obj ply stl repair; do
   # the corpus grows in build-fuzz/, the seeds stay as they are
   mkdir -p "$out/corpus_$mode"
@@ -26,10 +29,16 @@ for mode in off obj ply stl repair; do
   echo "fuzz: $mode for $seconds s"
   (cd "$out" && TMPDIR="$PWD" QD_FUZZ_FORMAT=$mode ./fuzz_read_mesh -max_total_time="$seconds" -rss_limit_mb=2048 \
      -timeout=10 -print_final_stats=1 -artifact_prefix="$mode-" "corpus_$mode" > "fuzz_$mode.log" 2>&1) || {
-    tail -60 "$out/fuzz_$mode.log"
-    echo "fuzz: $mode found a problem; the input is in $out/" >&2
-    exit 1
+    grep -E "SUMMARY|runtime error|ERROR|fuzz_read_mesh:" "$out/fuzz_$mode.log" | head -5
+    grep -A30 "ERROR" "$out/fuzz_$mode.log" | grep -E "#[0-9]+ .* in " | grep -vE "sanitizer|fuzzer::" | head -12
+    echo "fuzz: $mode found a problem; the input is in $out/:" $(cd "$out" && ls "$mode"-* 2>/dev/null) >&2
+    found="$found $mode"
+    continue
   }
   grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$out/fuzz_$mode.log" | tr '\n' ' '
   echo
 done
+if [ -n "$found" ]; then
+  echo "fuzz: findings in$found" >&2
+  [ "${FUZZ_FATAL:-1}" = "0" ] || exit 1
+fi

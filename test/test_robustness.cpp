@@ -321,7 +321,14 @@ BOOST_AUTO_TEST_CASE(reader_names_every_malformed_file)
   BOOST_TEST(status(scratch.write("u.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quux x\nend_header\n0\n")) ==
              QD::Error_code::INVALID_FILE);
   BOOST_TEST(status(scratch.write("h.ply", "ply\nformat ascii 1.0\nelement vertex 1\n")) == QD::Error_code::INVALID_FILE);
-  // the fuzzer's find: a second format line, which CGAL's reader ignores
+  // an extra number on an ASCII line, which shifted CGAL's reader onto '-3' read as a list length
+  BOOST_TEST(status(scratch.write("x.ply", ply_header + "0 0 0\n1 0 0\n1 1 0 -3\n3 0 1 2\n")) ==
+             QD::Error_code::INVALID_FILE);
+  // the fuzzer's finds: an element without properties announcing 3e11 entries
+  // (the walk over them never ended), and a second format line, which CGAL's reader ignores
+  BOOST_TEST(status(scratch.write("p.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                               "property float y\nproperty float z\nelement face 333333333333\n"
+                                               "end_header\n" + std::string(36, '\0'))) == QD::Error_code::INVALID_FILE);
   BOOST_TEST(status(scratch.write("f.ply", "ply\nformat binary_little_endian 1.0\nformat ascii 1.0\n" +
                                                ply_header.substr(ply_header.find("element")) +
                                                "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n")) == QD::Error_code::INVALID_FILE);
@@ -385,6 +392,8 @@ BOOST_AUTO_TEST_CASE(reader_names_every_malformed_file)
 // Inputs the fuzzer of fuzz/ found: each gives a valid triangle mesh or a named error.
 BOOST_AUTO_TEST_CASE(fuzzer_findings_stay_fixed)
 {
+  Scratch scratch("findings");
+  auto scratch_file = [&](const std::string& name, const std::string& content) { return scratch.write(name, content); };
   // an OBJ whose degenerate face, once removed by CGAL, left a border cycle of two edges
   Surface_mesh tm;
   const QD::Repair_report r =
@@ -410,6 +419,18 @@ BOOST_AUTO_TEST_CASE(fuzzer_findings_stay_fixed)
   BOOST_REQUIRE_MESSAGE(a, a.message);
   BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
   BOOST_TEST(CGAL::is_triangle_mesh(tm));
+  // an OBJ of quads and pentagons far from planar, on which CGAL's triangulation
+  // reached undefined behaviour (UBSan): they are fans, CGAL is not called
+  const QD::Repair_report u = QD::IO::read_and_repair_mesh(
+      std::string(CGAL_QD_TEST_DATA_DIR) + "/fuzzed_triangulation_undefined_behaviour.obj", tm);
+  BOOST_REQUIRE_MESSAGE(u, u.message);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  BOOST_TEST(CGAL::is_triangle_mesh(tm));
+  // a planar quad is still triangulated by CGAL: two triangles, no fold
+  const QD::Repair_report q = QD::IO::read_and_repair_mesh(
+      scratch_file("planar_quad.obj", "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3 4\n"), tm);
+  BOOST_REQUIRE_MESSAGE(q, q.message);
+  BOOST_TEST(num_faces(tm) == 2u);
 }
 
 // Random mutations of valid files in every format: the reader and the repair

@@ -335,16 +335,54 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
     const std::size_t before = num_faces(pm);
     for(const auto f : faces(pm))
       if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 3) ++r.polygons_triangulated;
+    // CGAL's triangulation projects a polygon onto a plane and builds a
+    // constrained Delaunay triangulation there: only where every polygon is
+    // nearly planar (within 1 % of its size of the plane of its Newell normal)
+    // is that well posed. On a polygon far from planar it was seen to fail, to
+    // stop on an assertion, to leave an invalid mesh and to reach undefined
+    // behaviour (all found by the fuzzer of fuzz/).
+    bool planar = true;
+    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, pm));
+    for(const auto f : faces(pm)) {
+      std::vector<std::array<double, 3>> c;
+      for(const auto v : CGAL::vertices_around_face(halfedge(f, pm), pm)) {
+        const auto& q = get(vpm, v);
+        c.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}});
+      }
+      if(c.size() == 3) continue;
+      std::array<double, 3> normal{{0, 0, 0}}, centre{{0, 0, 0}};
+      for(std::size_t i = 0; i < c.size(); ++i) {
+        const std::array<double, 3>&a = c[i], &b = c[(i + 1) % c.size()];
+        normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+        for(int k = 0; k < 3; ++k) centre[k] += a[k] / double(c.size());
+      }
+      const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      double size = 0, off = 0;
+      for(const auto& a : c) {
+        const double d[3] = {a[0] - centre[0], a[1] - centre[1], a[2] - centre[2]};
+        size = (std::max)(size, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+        if(length > 0) off = (std::max)(off, std::abs(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]) / length);
+      }
+      if(!(length > 0) || !(off <= 0.01 * size)) {
+        planar = false;
+        break;
+      }
+    }
     bool triangulated = false;
-    try {
-      triangulated = PMP::triangulate_faces(pm, np);
-    } catch(const CGAL::Failure_exception&) {  // an assertion of its constrained triangulation
-      triangulated = false;
+    if(planar) {
+      try {
+        triangulated = PMP::triangulate_faces(pm, np);
+      } catch(const CGAL::Failure_exception&) {  // an assertion of its constrained triangulation
+        triangulated = false;
+      }
     }
     if(!triangulated || !CGAL::is_valid_polygon_mesh(pm) || !CGAL::is_triangle_mesh(pm)) {
-      // CGAL's triangulation can fail on a polygon far from planar, stop on an
-      // assertion, or leave an invalid mesh (all found by the fuzzer of fuzz/):
-      // every polygon becomes a fan of triangles from its first corner instead
+      // a polygon far from planar, or CGAL's triangulation failed, stopped on an
+      // assertion or left an invalid mesh: every polygon becomes a fan of
+      // triangles from its first corner instead
       std::vector<std::vector<std::size_t>> fans;
       for(const auto& polygon : polygons)
         for(std::size_t k = 1; k + 1 < polygon.size(); ++k)

@@ -292,6 +292,11 @@ inline IO::Read_status check_PLY_structure(std::istream& in)
   }
   if(!ended) return invalid("the PLY header has no 'end_header'");
   if(format < 0) return invalid("the PLY header has no format line");
+  // an element without properties takes no room: its count could never be checked against the file
+  for(const Element& e : elements)
+    if(e.count > 0 && e.properties.empty())
+      return invalid("PLY element '" + e.name.substr(0, 30) + "' announces " + std::to_string(e.count) +
+                     " entries without any property");
   for(const Element& e : elements) {
     for(std::size_t i = 0; i < e.count; ++i) {
       if(format == 0) {
@@ -313,6 +318,9 @@ inline IO::Read_status check_PLY_structure(std::istream& in)
               return invalid("a line of PLY element '" + e.name.substr(0, 30) + "' has too few or bad numbers");
           }
         }
+        // CGAL's reader reads numbers, not lines: an extra number would shift it
+        if(w != words.size())
+          return invalid("a line of PLY element '" + e.name.substr(0, 30) + "' has more numbers than its properties");
       }
       else {
         for(const Property& p : e.properties) {
