@@ -7,7 +7,7 @@
 # the fuzzer's report, and the input that caused it is kept in build-fuzz/
 # (<mode>-crash-*, -oom-*, -timeout-*), to be fixed and added to the tests;
 # the other modes still run, and the script then fails, unless FUZZ_FATAL=0
-# (as in .ci/run, while the open findings of doc/robustness.md remain).
+# (as in .ci/run, while new campaigns still find new inputs).
 # usage: [FUZZ_FATAL=0] bash scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -17,7 +17,6 @@
 #include <CGAL_QD/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -28,7 +27,6 @@
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 
 #include <algorithm>
@@ -110,6 +108,77 @@ struct Repair_report
 };
 
 namespace internal {
+
+// Triangles (corner numbers) that cover a polygon given by its corners in
+// order: ear clipping in the plane of its Newell normal, keeping the order's
+// orientation; a fan from the first corner when the polygon is degenerate
+// (no normal), very large, or has no ear left (it crosses itself).
+inline std::vector<std::array<std::size_t, 3>> ear_clipping(const std::vector<std::array<double, 3>>& c)
+{
+  const std::size_t k = c.size();
+  std::vector<std::array<std::size_t, 3>> out;
+  auto fan = [&](const std::vector<std::size_t>& left) {
+    for(std::size_t i = 1; i + 1 < left.size(); ++i) out.push_back({{left[0], left[i], left[i + 1]}});
+  };
+  std::vector<std::size_t> left(k);
+  for(std::size_t i = 0; i < k; ++i) left[i] = i;
+  if(k <= 3 || k > 1000) {
+    fan(left);
+    return out;
+  }
+  double n[3] = {0, 0, 0};
+  for(std::size_t i = 0; i < k; ++i) {
+    const std::array<double, 3>&a = c[i], &b = c[(i + 1) % k];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if(!(length > 0) || !std::isfinite(length)) {
+    fan(left);
+    return out;
+  }
+  for(double& x : n) x /= length;
+  // u, v: a basis of the plane such that (u, v, n) is right-handed
+  double u[3] = {0, 0, 0};
+  const int axis = std::abs(n[0]) < 0.6 ? 0 : (std::abs(n[1]) < 0.6 ? 1 : 2);
+  u[axis] = 1;
+  const double along = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
+  for(int j = 0; j < 3; ++j) u[j] -= along * n[j];
+  const double ul = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for(double& x : u) x /= ul;
+  const double v[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+  std::vector<std::array<double, 2>> q(k);
+  for(std::size_t i = 0; i < k; ++i)
+    q[i] = {{c[i][0] * u[0] + c[i][1] * u[1] + c[i][2] * u[2], c[i][0] * v[0] + c[i][1] * v[1] + c[i][2] * v[2]}};
+  auto cross = [&](std::size_t a, std::size_t b, std::size_t p) {
+    return (q[b][0] - q[a][0]) * (q[p][1] - q[a][1]) - (q[b][1] - q[a][1]) * (q[p][0] - q[a][0]);
+  };
+  while(left.size() > 3) {
+    bool clipped = false;
+    const std::size_t m = left.size();
+    for(std::size_t i = 0; i < m && !clipped; ++i) {
+      const std::size_t a = left[(i + m - 1) % m], b = left[i], d = left[(i + 1) % m];
+      if(!(cross(a, b, d) > 0)) continue;  // reflex or flat
+      bool empty = true;
+      for(std::size_t p : left)
+        if(p != a && p != b && p != d && cross(a, b, p) >= 0 && cross(b, d, p) >= 0 && cross(d, a, p) >= 0) {
+          empty = false;
+          break;
+        }
+      if(!empty) continue;
+      out.push_back({{a, b, d}});
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if(!clipped) {
+      fan(left);
+      return out;
+    }
+  }
+  out.push_back({{left[0], left[1], left[2]}});
+  return out;
+}
 
 template <class TriangleMesh>
 void collect_garbage_if_any(TriangleMesh&) {}
@@ -258,8 +327,10 @@ Mesh_inspection inspect_mesh(const FaceGraph& tm, const NamedParameters& np = CG
 /// distinct corners are removed, then duplicated polygons and unused points;
 /// the soup is oriented consistently, duplicating the points where it is not
 /// manifold (`orient_polygon_soup()`); polygons with more than 3 corners are
-/// triangulated; zero-area triangles are removed (`remove_degenerate_faces()`)
-/// with the vertices they leave isolated.
+/// cut into triangles by ear clipping in the plane of their Newell normal (a
+/// fan where a polygon has no normal or crosses itself); zero-area triangles
+/// are removed (`remove_degenerate_faces()`) with the vertices they leave
+/// isolated, and a mesh that this leaves invalid is built again from its faces.
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph`
 /// \param points the points; taken by value because the repairs change them
@@ -332,66 +403,30 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
   PMP::polygon_soup_to_polygon_mesh(points, polygons, pm, CGAL::parameters::default_values(), np);
 
   if(!CGAL::is_triangle_mesh(pm)) {
+    // every polygon cut into triangles by ear clipping in the plane of its
+    // Newell normal (CGAL's triangulate_faces() was found by the fuzzer of
+    // fuzz/ to fail, stop on assertions, leave invalid meshes and crash on
+    // polygons far from planar or degenerate), and the mesh built again
     const std::size_t before = num_faces(pm);
-    for(const auto f : faces(pm))
-      if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 3) ++r.polygons_triangulated;
-    // CGAL's triangulation projects a polygon onto a plane and builds a
-    // constrained Delaunay triangulation there: only where every polygon is
-    // nearly planar (within 1 % of its size of the plane of its Newell normal)
-    // is that well posed. On a polygon far from planar it was seen to fail, to
-    // stop on an assertion, to leave an invalid mesh and to reach undefined
-    // behaviour (all found by the fuzzer of fuzz/).
-    bool planar = true;
-    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, pm));
-    for(const auto f : faces(pm)) {
+    std::vector<std::vector<std::size_t>> triangles;
+    for(const auto& polygon : polygons) {
+      std::vector<std::size_t> corners(polygon.begin(), polygon.end());
+      if(corners.size() > 3) ++r.polygons_triangulated;
       std::vector<std::array<double, 3>> c;
-      for(const auto v : CGAL::vertices_around_face(halfedge(f, pm), pm)) {
-        const auto& q = get(vpm, v);
-        c.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}});
-      }
-      if(c.size() == 3) continue;
-      std::array<double, 3> normal{{0, 0, 0}}, centre{{0, 0, 0}};
-      for(std::size_t i = 0; i < c.size(); ++i) {
-        const std::array<double, 3>&a = c[i], &b = c[(i + 1) % c.size()];
-        normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
-        for(int k = 0; k < 3; ++k) centre[k] += a[k] / double(c.size());
-      }
-      const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-      double size = 0, off = 0;
-      for(const auto& a : c) {
-        const double d[3] = {a[0] - centre[0], a[1] - centre[1], a[2] - centre[2]};
-        size = (std::max)(size, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-        if(length > 0) off = (std::max)(off, std::abs(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]) / length);
-      }
-      if(!(length > 0) || !(off <= 0.01 * size)) {
-        planar = false;
-        break;
-      }
+      for(std::size_t i : corners)
+        c.push_back({{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
+      for(const auto& t : internal::ear_clipping(c)) triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
     }
-    bool triangulated = false;
-    if(planar) {
-      try {
-        triangulated = PMP::triangulate_faces(pm, np);
-      } catch(const CGAL::Failure_exception&) {  // an assertion of its constrained triangulation
-        triangulated = false;
-      }
+    CGAL::clear(pm);
+    // a diagonal can meet an edge of other faces: orienting makes the soup manifold again
+    if(!PMP::is_polygon_soup_a_polygon_mesh(triangles)) {
+      const std::size_t known = points.size();
+      PMP::orient_polygon_soup(points, triangles);
+      r.non_manifold_vertices_duplicated += points.size() - known;
     }
-    if(!triangulated || !CGAL::is_valid_polygon_mesh(pm) || !CGAL::is_triangle_mesh(pm)) {
-      // a polygon far from planar, or CGAL's triangulation failed, stopped on an
-      // assertion or left an invalid mesh: every polygon becomes a fan of
-      // triangles from its first corner instead
-      std::vector<std::vector<std::size_t>> fans;
-      for(const auto& polygon : polygons)
-        for(std::size_t k = 1; k + 1 < polygon.size(); ++k)
-          fans.push_back({std::size_t(polygon[0]), std::size_t(polygon[k]), std::size_t(polygon[k + 1])});
-      CGAL::clear(pm);
-      if(!PMP::is_polygon_soup_a_polygon_mesh(fans))
-        return fail(Error_code::NOT_TRIANGLE_MESH, "a polygon could not be triangulated");
-      PMP::polygon_soup_to_polygon_mesh(points, fans, pm, CGAL::parameters::default_values(), np);
-    }
+    if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
+      return fail(Error_code::NOT_TRIANGLE_MESH, "the polygons could not be cut into triangles that make a manifold mesh");
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, pm, CGAL::parameters::default_values(), np);
     r.triangles_added = num_faces(pm) - before;
   }
   r.result = inspect_mesh(pm, np);
