@@ -233,9 +233,12 @@ Error_code write_viewer_HTML(std::ostream& out, const TriangleMesh& tm, const Fa
     for(int c = 0; c < 3; ++c) r[c] = (p[c] / 2 - (low[c] / 4 + high[c] / 4)) / extent * 2;
     return r;
   };
+  std::vector<P> unit_points(nv);
   std::vector<float> positions(3 * nv);
-  for(std::size_t i = 0; i < nv; ++i)
-    for(int c = 0; c < 3; ++c) positions[3 * i + c] = static_cast<float>(unit(points[i])[c]);
+  for(std::size_t i = 0; i < nv; ++i) {
+    unit_points[i] = unit(points[i]);
+    for(int c = 0; c < 3; ++c) positions[3 * i + c] = static_cast<float>(unit_points[i][c]);
+  }
   std::vector<std::uint32_t> triangles(3 * nf), face_chart_ids(nf);
   std::vector<std::array<std::size_t, 3>> tri(nf);
   for(face_descriptor f : faces(tm)) {
@@ -273,9 +276,9 @@ Error_code write_viewer_HTML(std::ostream& out, const TriangleMesh& tm, const Fa
   for(std::size_t id = 0; id < curves.size(); ++id) {
     double length = 0, sides[2] = {0, 0};
     for(halfedge_descriptor h : curves[id]) {
-      const P a = points[get(vim, source(h, tm))], b = points[get(vim, target(h, tm))];
-      length += internal::distance3(a, b);
-      const P ua = unit(a), ub = unit(b);
+      const std::size_t vs = get(vim, source(h, tm)), vt = get(vim, target(h, tm));
+      length += internal::distance3(points[vs], points[vt]);
+      const P &ua = unit_points[vs], &ub = unit_points[vt];
       for(int c = 0; c < 3; ++c) seams3.push_back(static_cast<float>(ua[c]));
       for(int c = 0; c < 3; ++c) seams3.push_back(static_cast<float>(ub[c]));
       ids3.push_back(static_cast<std::int32_t>(id));
@@ -305,8 +308,6 @@ Error_code write_viewer_HTML(std::ostream& out, const TriangleMesh& tm, const Fa
   }
 
   // the view that shows the most charts, as in segmentation.svg
-  std::vector<P> unit_points(nv);
-  for(std::size_t i = 0; i < nv; ++i) unit_points[i] = unit(points[i]);
   const internal::View_angles view = internal::view_showing_most_charts(unit_points, tri, chart, n, internal::View_angles());
   const std::vector<std::array<unsigned char, 3>> palette = chart_palette(tm, face_chart);
 
