@@ -372,6 +372,8 @@ int main(int argc, char** argv)
                           std::to_string(r.number_of_faces - smoothing.input_faces) + " faces added), zigzag " +
                           segment_mesh::text(smoothing.result.smoothing.zigzag_before) + " -> " +
                           segment_mesh::text(smoothing.result.smoothing.zigzag_after)
+                    : smoothing.result.status != CGAL_QD::Error_code::OK
+                        ? std::string("not run: ") + CGAL_QD::error_message(smoothing.result.status)
                     : smoothing.result.smoothing.curves_smoothed == 0
                         ? std::string("no curve could be smoothed; seams follow the triangle edges")
                         : std::to_string(smoothing.result.rejected_charts) +

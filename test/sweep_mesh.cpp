@@ -8,7 +8,9 @@
 // table row (or, with --header, the table's header).
 //
 // The exit code is 0 when every target holds: the mesh is either used or
-// refused with a named status, and nothing is NaN, no final chart overlaps.
+// refused with a named status, nothing is NaN, no final chart overlaps, and the
+// LPFB of the patch converges (merging trials whose LPFB does not converge are
+// rejected by the merging and counted in the last column).
 // It is 1 when a target is missed (the row says which), 2 on an exception.
 //
 // usage: sweep_mesh <mesh> | sweep_mesh --header
@@ -100,6 +102,8 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   std::ostringstream row;
   std::vector<std::string> missed;
+  // merging trials whose LPFB did not converge: reported (the trial is rejected)
+  std::size_t trials_not_converged = 0;
   try {
     Mesh tm;
     const CGAL_QD::Repair_report input = CGAL_QD::IO::read_and_repair_mesh(path, tm);
@@ -131,6 +135,7 @@ int main(int argc, char** argv)
     const double flatten_s = elapsed_ms(flatten_start) / 1000;  // the measures are not included
     const std::size_t loops = CGAL_QD::inspect_mesh(patch).border_loops;
     row << num_faces(patch) << " | " << loops << " | " << CGAL_QD::error_message(flat.status) << " | ";
+    if(flat.status == CGAL_QD::Error_code::NOT_CONVERGED) missed.push_back("LPFB not converged on the patch");
     if(flat) {
       const auto d = CGAL_QD::compute_distortion(patch, uv);
       bool nan = false;
@@ -151,6 +156,7 @@ int main(int argc, char** argv)
       if(!finite_uv(s.corner_uv) || !std::isfinite(s.max_area_distortion) || !std::isfinite(s.max_l2_stretch))
         missed.push_back("NaN in the segmentation");
       if(s.overlapping_charts > 0) missed.push_back("overlapping charts");
+      trials_not_converged = s.merging.lpfb_not_converged;
       row << s.number_of_charts << " | " << fixed(s.max_area_distortion, 2) << " | " << fixed(s.max_l2_stretch, 3)
           << " | " << s.overlapping_charts << " | ";
     }
@@ -167,7 +173,11 @@ int main(int argc, char** argv)
   struct rusage usage;
   getrusage(RUSAGE_SELF, &usage);
   row << fixed(double(usage.ru_maxrss) / 1024, 0) << " | ";
-  if(missed.empty()) row << "met |";
+  if(missed.empty()) {
+    row << "met";
+    if(trials_not_converged > 0) row << " (LPFB not converged in " << trials_not_converged << " trials)";
+    row << " |";
+  }
   else {
     row << "**missed:";
     for(const std::string& m : missed) row << ' ' << m << ';';

@@ -10,6 +10,7 @@
 
 #include <CGAL_QD/LPFB_border_parameterizer_3.h>
 #include <CGAL_QD/length_preserved_free_boundary.h>
+#include <CGAL_QD/internal/lpfb_solver.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -21,7 +22,12 @@
 #include <CGAL/boost/graph/Graph_with_descriptor_with_graph.h>
 
 #include <cmath>
+#include <fstream>
+#include <limits>
 #include <map>
+#include <numeric>
+#include <sstream>
+#include <string>
 #include <set>
 #include <unordered_map>
 #include <vector>
@@ -190,7 +196,7 @@ double angle_error_check(const Mesh& tm, const Uv_store<Mesh>& uv)
 BOOST_AUTO_TEST_CASE(error_messages_are_distinct)
 {
   std::set<std::string> seen;
-  for(int c = 0; c <= static_cast<int>(QD::Error_code::CANNOT_WRITE); ++c) {
+  for(int c = 0; c <= static_cast<int>(QD::Error_code::COORDINATES_OUT_OF_RANGE); ++c) {
     const std::string m = QD::error_message(static_cast<QD::Error_code>(c));
     BOOST_TEST(!m.empty());
     BOOST_TEST(m != "unknown error code");
@@ -384,6 +390,109 @@ BOOST_AUTO_TEST_CASE(oscillating_full_steps_are_globalised)
       tm, uv2.pmap(), QD::parameters::use_line_search(false).number_of_iterations(200));
   BOOST_TEST((plain.status == QD::Error_code::NOT_CONVERGED));
   BOOST_TEST(uv2.map.empty());  // nothing written on failure
+}
+
+// Two patches of the robustness sweep on which the identity-Hessian steps
+// converge only linearly and reached the iteration limit (NOT_CONVERGED):
+// the Newton steps that take over converge, to the same minimum.
+// reads an LPFB problem of test/data (see the comments of its files)
+QD::internal::Lpfb_problem read_lpfb_problem(const std::string& name)
+{
+  std::ifstream in(std::string(CGAL_QD_TEST_DATA_DIR) + "/" + name);
+  BOOST_REQUIRE(in);
+  std::string line;
+  std::stringstream data;
+  while(std::getline(in, line))
+    if(!line.empty() && line[0] != '#') data << line << '\n';
+  std::size_t n = 0, groups = 0;
+  QD::internal::Lpfb_problem pb;
+  BOOST_REQUIRE(data >> n >> pb.number_of_loops >> groups);
+  pb.target_angle.resize(n);
+  pb.edge_length.resize(n);
+  pb.edge_loop.resize(n);
+  pb.corner_group.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    BOOST_REQUIRE(data >> pb.target_angle[i] >> pb.edge_length[i] >> pb.edge_loop[i] >> pb.corner_group[i]);
+  pb.group_sum.resize(groups);
+  for(double& t : pb.group_sum) BOOST_REQUIRE(data >> t);
+  return pb;
+}
+
+BOOST_AUTO_TEST_CASE(armadillo_half_border_converges)
+{
+  const QD::internal::Lpfb_problem pb = read_lpfb_problem("armadillo_half_lpfb_problem.txt");
+  const std::size_t n = pb.target_angle.size();
+  BOOST_REQUIRE_EQUAL(n, 925u);
+
+  QD::internal::Lpfb_options options;
+  const QD::internal::Lpfb_solution sol = QD::internal::Lpfb_solver(pb).solve(options);
+  BOOST_TEST((sol.status == QD::internal::Lpfb_status::CONVERGED));
+  BOOST_TEST(sol.constraint_residual <= options.constraint_tolerance);
+  BOOST_TEST(sol.iterations < 100u);
+  BOOST_TEST_MESSAGE("armadillo half: " << sol.iterations << " iterations, objective " << sol.objective);
+  // the layout closes: the last corner's edge ends at corner 0
+  const auto& last = sol.position.back();
+  double x = last[0], y = last[1], turning = 0;
+  for(std::size_t k = 1; k < n; ++k) turning += pi - sol.theta[k];
+  x += pb.edge_length[n - 1] * std::cos(turning);
+  y += pb.edge_length[n - 1] * std::sin(turning);
+  BOOST_TEST(std::hypot(x, y) < 1e-8 * std::accumulate(pb.edge_length.begin(), pb.edge_length.end(), 0.));
+
+  // identity-Hessian steps only: the iteration limit before the tolerance
+  options.newton_after = options.max_iterations + 1;
+  options.retry_max_step = std::numeric_limits<double>::infinity();
+  const QD::internal::Lpfb_solution slow = QD::internal::Lpfb_solver(pb).solve(options);
+  BOOST_TEST((slow.status == QD::internal::Lpfb_status::NOT_CONVERGED));
+  // a longer run of them approaches the same minimum
+  options.max_iterations = 2000;
+  const QD::internal::Lpfb_solution longer = QD::internal::Lpfb_solver(pb).solve(options);
+  BOOST_TEST(std::abs(longer.objective - sol.objective) <= 1e-9 * sol.objective);
+}
+
+// Merging trials of tube-like charts: the linearised closure of a loop that
+// does not turn in 3D asks for steps of tens or hundreds of radians; with
+// such steps the iteration winds the border around and wanders. Run again
+// with steps of at most pi/2 per angle, it converges.
+BOOST_AUTO_TEST_CASE(tube_trials_converge_with_bounded_steps)
+{
+  for(const char* name : {"boeing_tube_lpfb_problem.txt", "turbine_tubes_lpfb_problem.txt"}) {
+    BOOST_TEST_CONTEXT(name)
+    {
+      const QD::internal::Lpfb_problem pb = read_lpfb_problem(name);
+      QD::internal::Lpfb_options options;
+      const QD::internal::Lpfb_solution sol = QD::internal::Lpfb_solver(pb).solve(options);
+      BOOST_TEST((sol.status == QD::internal::Lpfb_status::CONVERGED));
+      BOOST_TEST(sol.constraint_residual <= options.constraint_tolerance);
+      // a moderate objective: the angles moved by well under a radian on average
+      BOOST_TEST(sol.objective < 0.5 * double(pb.target_angle.size()));
+      BOOST_TEST_MESSAGE(name << ": " << sol.iterations << " iterations, objective " << sol.objective);
+      options.retry_max_step = std::numeric_limits<double>::infinity();
+      const QD::internal::Lpfb_solution unbounded = QD::internal::Lpfb_solver(pb).solve(options);
+      BOOST_TEST((unbounded.status == QD::internal::Lpfb_status::NOT_CONVERGED));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(pig_component_with_three_loops_converges)
+{
+  Surface_mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_TEST_DATA_DIR) + "/pig_largest_component.off", tm));
+  BOOST_REQUIRE_EQUAL(num_faces(tm), 864u);
+  Uv_store<Surface_mesh> uv;
+  const auto r = QD::compute_length_preserved_free_boundary(tm, uv.pmap(), CGAL::parameters::default_values());
+  BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+  BOOST_TEST(r.number_of_loops == 3u);
+  BOOST_TEST(r.iterations < 100u);
+  BOOST_TEST(r.constraint_residual < 1e-10);
+  BOOST_TEST(r.coincidence_error < 1e-10);
+  BOOST_TEST(r.boundary_length_error < 1e-10);
+  std::size_t crossings = 0;
+  for(const auto& lc : check_loops(tm, uv, crossings)) BOOST_TEST(lc.max_length_error < 1e-10);
+  BOOST_TEST_MESSAGE("pig component: " << r.iterations << " iterations, " << crossings << " crossings");
+  // the paper's plain iteration does not get there
+  Uv_store<Surface_mesh> plain;
+  const auto p = QD::compute_length_preserved_free_boundary(tm, plain.pmap(), QD::parameters::use_line_search(false));
+  BOOST_TEST((p.status == QD::Error_code::NOT_CONVERGED));
 }
 
 BOOST_AUTO_TEST_CASE(hemisphere_and_flat_disk)

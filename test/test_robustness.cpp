@@ -17,6 +17,8 @@
 #include <CGAL_QD/IO/read_mesh.h>
 #include <CGAL_QD/distortion.h>
 #include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/optimize_flattening.h>
+#include <CGAL_QD/length_preserved_free_boundary.h>
 #include <CGAL_QD/repair_mesh.h>
 #include <CGAL_QD/segment_quasi_developable.h>
 #include <CGAL_QD/validate_patch.h>
@@ -504,6 +506,110 @@ BOOST_AUTO_TEST_CASE(fuzzed_files_give_a_usable_mesh_or_a_named_error)
 }
 
 // ------------------------------------------------------------ random patches
+
+// Coordinates in any finite range (issue: a 6 x 6 grid scaled by 1e200 was cut
+// into 72 one-face charts). segment_quasi_developable(), flatten_patch() and
+// compute_distortion() scale such meshes by a power of two; the functions that
+// do not, refuse them with a named status.
+Surface_mesh scaled_copy(const Surface_mesh& tm, double scale)
+{
+  Surface_mesh out = tm;
+  for(const auto v : vertices(out)) {
+    const auto p = out.point(v);
+    out.point(v) = Epick::Point_3(p.x() * scale, p.y() * scale, p.z() * scale);
+  }
+  return out;
+}
+
+BOOST_AUTO_TEST_CASE(segmentation_in_any_finite_range)
+{
+  const Surface_mesh flat = make<Surface_mesh>(grid(6, 6, [](double u, double v) { return P3{u, v, 0.}; }));
+  const Surface_mesh cap = make<Surface_mesh>(polar(8, 24, sphere_cap(1.2)));
+  auto segment = [](const Surface_mesh& tm) {
+    Surface_mesh m = tm;
+    auto chart = m.add_property_map<Surface_mesh::Face_index, std::size_t>("f:chart", 0).first;
+    const QD::Segmentation_result<Surface_mesh> r = QD::segment_quasi_developable(m, chart);
+    std::vector<std::size_t> ids;
+    for(const auto f : faces(m)) ids.push_back(chart[f]);
+    return std::make_pair(r, ids);
+  };
+  const auto flat0 = segment(flat);
+  const auto cap0 = segment(cap);
+  BOOST_REQUIRE(flat0.first.number_of_charts == 1u);
+  for(const double scale : {1e-300, 1e-200, 1e-100, 1e100, 1e200, 1e300, 0x1p-664, 0x1p664, 0x1p-70, 0x1p70}) {
+    BOOST_TEST_CONTEXT("scale " << scale)
+    {
+      const auto f = segment(scaled_copy(flat, scale));
+      BOOST_REQUIRE(f.first);
+      BOOST_TEST(f.first.number_of_charts == 1u);  // not one chart per face
+      BOOST_TEST(f.first.max_area_distortion < 1e-9);
+      // the unit square, in the units of the mesh
+      double area = 0;
+      const auto& uv = f.first.corner_uv;
+      for(std::size_t i = 0; i + 2 < uv.size(); i += 3) {
+        const double ax = (uv[i + 1][0] - uv[i][0]) / scale, ay = (uv[i + 1][1] - uv[i][1]) / scale;
+        const double bx = (uv[i + 2][0] - uv[i][0]) / scale, by = (uv[i + 2][1] - uv[i][1]) / scale;
+        area += 0.5 * std::abs(ax * by - ay * bx);
+      }
+      BOOST_TEST(close(area, 1.0, 1e-9));
+      BOOST_TEST(f.first.points.size() == num_vertices(flat));
+      BOOST_TEST(close(f.first.points.back()[0] / scale, 1.0, 1e-12));  // the input points, not the scaled ones
+
+      const auto c = segment(scaled_copy(cap, scale));
+      BOOST_REQUIRE(c.first);
+      BOOST_TEST(c.first.overlapping_charts == 0u);
+      BOOST_TEST(c.first.rejected_charts == 0u);
+      BOOST_TEST(c.first.number_of_charts <= 2u);
+      int exponent = 0;
+      if(std::frexp(scale, &exponent) == 0.5) {
+        // a power of two scales exactly: the same charts and measures
+        BOOST_TEST(c.second == cap0.second);
+        BOOST_TEST(close(c.first.seam_length / scale, cap0.first.seam_length, 1e-12));
+        BOOST_TEST(close(c.first.max_area_distortion, cap0.first.max_area_distortion, 1e-12));
+        BOOST_REQUIRE(c.first.charts.size() == cap0.first.charts.size());
+        // areas in the units of the mesh, where a double holds them (2^1328 does not)
+        if(std::abs(exponent) < 500)
+          for(std::size_t k = 0; k < c.first.charts.size(); ++k)
+            BOOST_TEST(close(c.first.charts[k].area / (scale * scale), cap0.first.charts[k].area, 1e-12));
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
+{
+  const Surface_mesh cap = make<Surface_mesh>(polar(8, 24, sphere_cap(1.2)));
+  Uv_store<Surface_mesh> uv0;
+  BOOST_REQUIRE(QD::flatten_patch(cap, uv0.pmap()));
+  const auto d0 = QD::compute_distortion(cap, uv0.pmap_const());
+  for(const double scale : {1e-300, 1e-200, 1e200, 1e300}) {
+    BOOST_TEST_CONTEXT("scale " << scale)
+    {
+      const Surface_mesh m = scaled_copy(cap, scale);
+      Uv_store<Surface_mesh> uv;
+      const QD::Flattening_result r = QD::flatten_patch(m, uv.pmap());
+      BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+      double error = 0;
+      for(const auto v : vertices(m))
+        for(int k = 0; k < 2; ++k) error = (std::max)(error, std::abs(uv.at(v)[k] / scale - uv0.at(v)[k]));
+      BOOST_TEST(error < 1e-9);
+      const auto d = QD::compute_distortion(m, uv.pmap_const());
+      BOOST_REQUIRE(d.status == QD::Error_code::OK);
+      BOOST_TEST(close(d.area_distortion, d0.area_distortion, 1e-6));
+      BOOST_TEST(close(d.l2_stretch, d0.l2_stretch, 1e-6));
+
+      // functions without the scaling refuse such coordinates by name
+      Uv_store<Surface_mesh> border;
+      BOOST_TEST((QD::compute_length_preserved_free_boundary(m, border.pmap()).status ==
+                  QD::Error_code::COORDINATES_OUT_OF_RANGE));
+      BOOST_TEST(border.map.empty());
+      BOOST_TEST((QD::optimize_flattening(m, uv.pmap()).status == QD::Error_code::COORDINATES_OUT_OF_RANGE));
+      Surface_mesh copy = m;
+      auto chart = copy.add_property_map<Surface_mesh::Face_index, std::size_t>("f:c", 0).first;
+      BOOST_TEST((QD::segment_by_error_controlled_vsa(copy, chart).status == QD::Error_code::COORDINATES_OUT_OF_RANGE));
+    }
+  }
+}
 
 #ifdef CGAL_QD_DEMO_MESH_DIR
 // Disk patches of random seeds, sizes and holes grown on real meshes flatten

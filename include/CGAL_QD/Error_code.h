@@ -32,7 +32,11 @@ enum class Error_code {
   INVALID_FILE,            ///< the file is empty, of an unknown format, truncated or malformed
   INVALID_INDEX,           ///< a polygon refers to a point that does not exist
   INVALID_ARGUMENT,        ///< an argument does not fit: an output that is not empty, a result of another mesh
-  CANNOT_WRITE             ///< the output stream failed, or the library that writes the file did
+  CANNOT_WRITE,            ///< the output stream failed, or the library that writes the file did
+  /// the largest |coordinate| is outside [2^-64, 2^64] (about 5e-20 to 1.8e19), where squared
+  /// areas overflow or underflow; `segment_quasi_developable()` and `flatten_patch()` scale such
+  /// meshes internally instead
+  COORDINATES_OUT_OF_RANGE
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -62,6 +66,8 @@ inline const char* error_message(Error_code code)
     case Error_code::INVALID_ARGUMENT:
       return "an argument does not fit (an output mesh that is not empty, or a result that belongs to another mesh)";
     case Error_code::CANNOT_WRITE: return "the output could not be written";
+    case Error_code::COORDINATES_OUT_OF_RANGE:
+      return "the coordinates are out of range (the largest is beyond 2^64 or below 2^-64); scale the mesh";
   }
   return "unknown error code";
 }

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -118,6 +119,10 @@ struct Merging_result
   /// speculative trials whose result an earlier acceptance made stale
   std::size_t trials = 0;
   std::size_t merges = 0;           ///< accepted trials (curves removed)
+  /// flattenings of the splitting and the merging whose LPFB reached its
+  /// iteration limit (`Error_code::NOT_CONVERGED`); such a chart is not
+  /// accepted: a split goes on, a trial keeps its two charts
+  std::size_t lpfb_not_converged = 0;
   /// the edges where the surface is cut: between two charts, or remaining curves inside a chart
   std::vector<edge_descriptor> seam_edges;
   double seam_length = 0;
@@ -175,6 +180,9 @@ public:
                   const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds)
       : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds)
   {}
+
+  // evaluations whose LPFB reached its iteration limit
+  std::size_t lpfb_not_converged() const { return m_not_converged.load(); }
 
   // `faces` in increasing face index; `corner_uv`, if given, receives the UVs
   // of the corners (3 per face, in the order of `faces`). `border_target`, if
@@ -282,6 +290,7 @@ public:
     rep.number_of_border_loops = flat.border.number_of_loops;
     if(!flat) {
       rep.status = flat.status;
+      if(flat.status == Error_code::NOT_CONVERGED) ++m_not_converged;
       return rep;
     }
     if(!measure(sm, uv, rep)) return rep;
@@ -425,6 +434,7 @@ private:
   VIM m_vim;
   const std::vector<std::array<double, 3>>& m_points;
   Merge_thresholds m_thresholds;
+  mutable std::atomic<std::size_t> m_not_converged{0};
   mutable std::mutex m_scratch_mutex;
   mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
 };
@@ -954,6 +964,7 @@ Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, 
   result.boundary_curves = merger.number_of_curves();
   merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::SMALLEST_AREA_FIRST));
   std::tie(result.trials, result.merges) = merger.template merge<ConcurrencyTag>(geo, progress, verbose);
+  result.lpfb_not_converged = evaluator.lpfb_not_converged();
   result.number_of_charts = merger.number_of_final_charts();
   result.seam_length = merger.seams(std::back_inserter(result.seam_edges));
   typedef typename boost::property_traits<FaceChartMap>::value_type Id;

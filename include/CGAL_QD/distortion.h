@@ -378,19 +378,36 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 ///   1e-6 toward their centroids, then tested exactly): the touch is an
 ///   overlap if they overlap.
 /// \returns a report whose `status` is `OK`, `EMPTY_MESH`, `NOT_TRIANGLE_MESH` or
-///          `INVALID_COORDINATES` (a NaN or infinite 3D or UV coordinate).
+///          `INVALID_COORDINATES` (a NaN or infinite 3D or UV coordinate). Coordinates in
+///          any finite range are measured: beyond [2^-64, 2^64] the mesh and its UVs are
+///          scaled by a power of two (exact), and `area_3d`, `area_2d` and
+///          `boundary_length_error` scaled back.
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Distortion_report<TriangleMesh> compute_distortion(const TriangleMesh& tm, const VertexUVMap& uv,
                                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   internal::Distortion_options opt;
   opt.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), 0.);
-  return internal::compute_distortion_impl(tm, uv, vpm, vim, opt);
+  // coordinates beyond [2^-64, 2^64] (3D or UV) are measured scaled by a power
+  // of two, which is exact (internal/point_scale.h)
+  double largest = internal::largest_coordinate(vertices(tm), input_vpm);
+  for(const auto v : vertices(tm)) {
+    const auto q = internal::uv_of(uv, v);
+    largest = (std::max)(largest, (std::max)(std::abs(q[0]), std::abs(q[1])));
+  }
+  const double scale = internal::normalizing_scale(largest);
+  const internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
+  const internal::Scaled_uv_map<VertexUVMap> scaled_uv{uv, 1. / scale};  // reads uv * scale
+  Distortion_report<TriangleMesh> rep = internal::compute_distortion_impl(tm, scaled_uv, vpm, vim, opt);
+  rep.area_3d /= scale * scale;
+  rep.area_2d /= scale * scale;
+  rep.boundary_length_error /= scale;
+  return rep;
 }
 
 namespace internal {

@@ -11,6 +11,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/length_preserved_free_boundary.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/validation.h>
 
@@ -255,6 +256,11 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point t)
 /// \returns a `Flattening_result`; on a status other than `OK` nothing is written.
 /// The statuses are those of `compute_length_preserved_free_boundary()`, and
 /// `SOLVER_FAILED` when no solver could solve the interior system.
+///
+/// Coordinates in any finite range are accepted: where the largest |coordinate| is
+/// beyond [2^-64, 2^64] the patch is flattened scaled by a power of two (exact) and
+/// the UVs, `boundary_length_error` and `cut_length` are scaled back
+/// (`COORDINATES_OUT_OF_RANGE` only if a UV would then overflow).
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
                                 const NamedParameters& np = CGAL::parameters::default_values())
@@ -269,8 +275,12 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
 
   const auto start = std::chrono::steady_clock::now();
   Flattening_result result;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
+  // coordinates beyond [2^-64, 2^64] are scaled by a power of two, which is
+  // exact (internal/point_scale.h); the UVs and lengths are scaled back
+  const double scale = internal::normalizing_scale(internal::largest_coordinate(vertices(tm), input_vpm));
+  const internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   // a copy: the solver keeps its factorisation
@@ -388,12 +398,26 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
     }
   }
 
+  if(scale != 1.) {
+    // scaled back, a flattening larger than its surface could overflow
+    bool finite = !(n > 0) || (X / scale).allFinite();
+    for(vertex_descriptor v : vertices(tm))
+      if(row[get(vim, v)] < 0 && halfedge(v, tm) != GT::null_halfedge())
+        finite = finite && std::isfinite(buffer[get(vim, v)].x / scale) && std::isfinite(buffer[get(vim, v)].y / scale);
+    if(!finite) {
+      result.status = Error_code::COORDINATES_OUT_OF_RANGE;
+      result.time_total_ms = internal::milliseconds_since(start);
+      return result;
+    }
+  }
   for(vertex_descriptor v : vertices(tm)) {
     if(halfedge(v, tm) == GT::null_halfedge()) continue;
     const long r = row[get(vim, v)];
-    if(r >= 0) put(uv, v, Point_2(X(r, 0), X(r, 1)));
-    else put(uv, v, Point_2(buffer[get(vim, v)].x, buffer[get(vim, v)].y));
+    if(r >= 0) put(uv, v, Point_2(X(r, 0) / scale, X(r, 1) / scale));
+    else put(uv, v, Point_2(buffer[get(vim, v)].x / scale, buffer[get(vim, v)].y / scale));
   }
+  result.border.boundary_length_error /= scale;
+  result.border.cut_length /= scale;
   result.time_total_ms = internal::milliseconds_since(start);
   return result;
 }

@@ -428,7 +428,8 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///   - `CGAL_QD::parameters::sparse_solver`: as in `flatten_patch()`
 ///   - `vertex_point_map`, `vertex_index_map`
 /// \returns an `Optimization_result`: `EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
-///          `INVALID_COORDINATES` (a non-finite point or UV), `DEGENERATE_FACE`,
+///          `INVALID_COORDINATES` (a non-finite point or UV), `COORDINATES_OUT_OF_RANGE` (a
+///          |coordinate| of a point or UV beyond [2^-64, 2^64]), `DEGENERATE_FACE`,
 ///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite)
 ///          on invalid input, `SOLVER_FAILED` if the system could not
 ///          be solved; in those cases nothing is written.
@@ -472,6 +473,16 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
     if(!std::isfinite(p[i][0]) || !std::isfinite(p[i][1]) || !std::isfinite(p[i][2]) || !std::isfinite(u[i][0]) ||
        !std::isfinite(u[i][1])) {
       result.status = Error_code::INVALID_COORDINATES;
+      return result;
+    }
+  }
+  {
+    double largest = 0;
+    for(std::size_t i = 0; i < nv; ++i)
+      largest = (std::max)({largest, std::abs(p[i][0]), std::abs(p[i][1]), std::abs(p[i][2]), std::abs(u[i][0]),
+                            std::abs(u[i][1])});
+    if(!internal::coordinates_in_range(largest)) {
+      result.status = Error_code::COORDINATES_OUT_OF_RANGE;
       return result;
     }
   }

@@ -9,6 +9,7 @@
 /// smallest enclosing rectangle and packed without overlap into the unit square.
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -211,6 +212,18 @@ Atlas_result pack_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,
       result.status = Error_code::INVALID_COORDINATES;
       return result;
     }
+  // UVs beyond [2^-64, 2^64] (a mesh at 1e200) are packed scaled by a power of
+  // two, which is exact: box areas would overflow (internal/point_scale.h)
+  double largest = 0;
+  for(const auto& p : corner_uv) largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1])});
+  const double uv_scale = internal::normalizing_scale(largest);
+  std::vector<std::array<double, 2>> scaled_uv;
+  if(uv_scale != 1.) {
+    scaled_uv = corner_uv;
+    for(auto& p : scaled_uv) p = {{p[0] * uv_scale, p[1] * uv_scale}};
+  }
+  const std::vector<std::array<double, 2>>& uv = uv_scale != 1. ? scaled_uv : corner_uv;
+
   std::vector<std::size_t> chart_of(nf);
   std::size_t n = 0;
   for(auto f : faces(tm)) {
@@ -220,11 +233,8 @@ Atlas_result pack_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,
 
   // smallest enclosing rectangle of every chart
   std::vector<std::vector<K::Point_2>> points(n);
-  double uv_area = 0;
   for(std::size_t i = 0; i < nf; ++i) {
-    const auto &a = corner_uv[3 * i], &b = corner_uv[3 * i + 1], &c = corner_uv[3 * i + 2];
-    uv_area += 0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-    for(int k = 0; k < 3; ++k) points[chart_of[i]].emplace_back(corner_uv[3 * i + k][0], corner_uv[3 * i + k][1]);
+    for(int k = 0; k < 3; ++k) points[chart_of[i]].emplace_back(uv[3 * i + k][0], uv[3 * i + k][1]);
   }
   result.charts.resize(n);
   std::vector<std::array<double, 2>> low(n, {{0., 0.}});  // the rotated box's lower corner
@@ -288,12 +298,20 @@ Atlas_result pack_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,
     const Chart_placement& c = result.charts[chart_of[i]];
     const double co = std::cos(c.angle), si = std::sin(c.angle);
     for(int k = 0; k < 3; ++k) {
-      const auto& p = corner_uv[3 * i + k];
+      const auto& p = uv[3 * i + k];
       result.corner_uv[3 * i + k] = {{result.scale * (co * p[0] - si * p[1]) + c.offset[0],
                                       result.scale * (si * p[0] + co * p[1]) + c.offset[1]}};
     }
   }
-  result.coverage = uv_area * result.scale * result.scale;
+  // measured in the unit square, where the area of a mesh at 1e200 (1e400 in
+  // its units) is representable
+  double covered = 0;
+  for(std::size_t i = 0; i < nf; ++i) {
+    const auto &a = result.corner_uv[3 * i], &b = result.corner_uv[3 * i + 1], &c = result.corner_uv[3 * i + 2];
+    covered += 0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+  }
+  result.coverage = covered;
+  result.scale *= uv_scale;  // atlas units per unit of the input UVs
   return result;
 }
 

@@ -16,6 +16,7 @@
 #include <CGAL_QD/chart_merging.h>
 #include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/internal/constants.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/vsa_segmentation.h>
@@ -56,6 +57,38 @@ struct Segmentation_result : Chart_flattening_result<TriangleMesh>
   // `points` (inherited): the denoised positions when the denoising ran, the input positions otherwise
   double time_vsa_ms = 0, time_refine_ms = 0, time_denoise_ms = 0, time_merge_ms = 0, time_total_ms = 0;
 };
+
+namespace internal {
+
+// the results of a segmentation of the mesh scaled by `scale` (a power of
+// two), in the units of the mesh
+template <class TriangleMesh>
+void scale_back(Segmentation_result<TriangleMesh>& r, double scale)
+{
+  const double length = 1. / scale, area = length * length;
+  for(auto& uv : r.corner_uv)
+    for(double& x : uv) x *= length;
+  for(auto& p : r.points)
+    for(double& x : p) x *= length;
+  for(Chart_report& c : r.charts) c.area *= area;
+  r.seam_length *= length;
+  r.merging.seam_length *= length;
+  for(double& a : r.vsa.chart_area) a *= area;
+  r.vsa.smoothing_radius *= length;
+  r.vsa.min_chart_area *= area;
+  r.refinement.border_cost_before *= length;
+  r.refinement.border_cost_after *= length;
+  r.denoising.max_displacement *= length;
+}
+
+inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
+{
+  for(const auto& p : uv)
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1])) return false;
+  return true;
+}
+
+} // namespace internal
 
 /// \ingroup PkgCGAL_QDRef
 /// segments `tm` into charts that each flatten by LPFB+IP within the
@@ -104,17 +137,23 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
 
   const auto start = std::chrono::steady_clock::now();
   Segmentation_result<TriangleMesh> result;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
-  const bool refine = choose_parameter(get_parameter(np, internal_np::refine_boundaries_t()), true);
-  const bool denoise = choose_parameter(get_parameter(np, internal_np::denoise_boundaries_t()), false);
-  const bool merge = choose_parameter(get_parameter(np, internal_np::merge_charts_t()), true);
-  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
+  // coordinates beyond [2^-64, 2^64] are scaled by a power of two, which is
+  // exact (internal/point_scale.h): every step sees the scaled points, and the
+  // results in units of length are scaled back at the end
+  const double scale = internal::normalizing_scale(internal::largest_coordinate(vertices(tm), input_vpm));
+  const internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
+  const auto snp = np.vertex_point_map(vpm);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, snp);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, snp);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, snp);
+  const bool refine = choose_parameter(get_parameter(snp, internal_np::refine_boundaries_t()), true);
+  const bool denoise = choose_parameter(get_parameter(snp, internal_np::denoise_boundaries_t()), false);
+  const bool merge = choose_parameter(get_parameter(snp, internal_np::merge_charts_t()), true);
+  const bool verbose = choose_parameter(get_parameter(snp, CGAL::internal_np::verbose), false);
   const std::function<void(const char*, double)> progress =
-      choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
+      choose_parameter(get_parameter(snp, CGAL::internal_np::callback), std::function<void(const char*, double)>());
   typedef typename std::remove_const<decltype(fim)>::type FIM;
   typedef typename std::remove_const<decltype(him)>::type HIM;
   typedef typename std::remove_const<decltype(vim)>::type VIM;
@@ -128,7 +167,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
 
   // 1. error-controlled VSA
   if(progress) progress("vsa", 0.);
-  result.vsa = segment_by_error_controlled_vsa(tm, chart_map, np);
+  result.vsa = segment_by_error_controlled_vsa(tm, chart_map, snp);
   result.time_vsa_ms = result.vsa.time_ms;
   result.charts_after_vsa = result.charts_after_refinement = result.vsa.number_of_charts;
   if(verbose) std::cerr << "VSA: " << result.charts_after_vsa << " charts in " << result.time_vsa_ms << " ms\n";
@@ -136,7 +175,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   // 2. minimum-cut refinement
   if(refine) {
     if(progress) progress("refine", 0.);
-    result.refinement = refine_chart_boundaries(tm, chart_map, np);
+    result.refinement = refine_chart_boundaries(tm, chart_map, snp);
     result.time_refine_ms = result.refinement.time_ms;
     result.charts_after_refinement = result.refinement.number_of_charts;
     if(verbose)
@@ -150,7 +189,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   if(denoise) {
     if(progress) progress("denoise", 0.);
     internal::Vector_point_map<VIM> copy{&result.points, vim};
-    result.denoising = denoise_chart_boundaries(tm, chart_map, copy, np);
+    result.denoising = denoise_chart_boundaries(tm, chart_map, copy, snp);
     result.time_denoise_ms = result.denoising.time_ms;
     if(verbose)
       std::cerr << "denoising: " << result.denoising.number_of_border_vertices << " vertices, largest move "
@@ -160,7 +199,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   // 4. splitting and merging
   auto t = std::chrono::steady_clock::now();
   const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
-  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
+  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(snp);
   // the splitting and the merging keep every chart a little below the A_loc
   // bound: the final flattening then has room to give the two sides of every
   // seam the same length, and the seam smoothing room to move the borders
@@ -175,10 +214,11 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   result.charts_before_merging = result.charts_after_refinement + result.merging.charts_split;
   merger.build_curves();
   result.merging.boundary_curves = merger.number_of_curves();
-  merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::SMALLEST_AREA_FIRST));
+  merger.set_order(choose_parameter(get_parameter(snp, internal_np::merge_order_t()), Merge_order::SMALLEST_AREA_FIRST));
   if(progress && merge) progress("merge", 0.);
   std::tie(result.merging.trials, result.merging.merges) =
       merger.template merge<ConcurrencyTag>(geo, progress, verbose, merge);
+  result.merging.lpfb_not_converged = evaluator.lpfb_not_converged();
   result.number_of_charts = result.merging.number_of_charts = merger.number_of_final_charts();
   result.merging.seam_length = merger.seams(std::back_inserter(result.merging.seam_edges));
   result.merging.time_ms = result.time_merge_ms = internal::milliseconds_since(t);
@@ -195,9 +235,19 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
               << " %, max L2 " << result.max_l2_stretch << ", " << result.overlapping_charts << " overlapping, in "
               << result.time_flatten_ms << " ms\n";
 
+  if(scale != 1.) {
+    internal::scale_back(result, scale);
+    if(!denoise) result.points = internal::points_by_index(tm, input_vpm, vim);  // exactly the input
+    if(!internal::all_finite(result.corner_uv)) {
+      // a flattening larger than its surface overflowed on the way back
+      Segmentation_result<TriangleMesh> refused;
+      refused.status = Error_code::COORDINATES_OUT_OF_RANGE;
+      return refused;
+    }
+  }
   typedef typename boost::property_traits<FaceChartMap>::value_type Id;
   for(face_descriptor f : faces(tm)) put(face_chart, f, static_cast<Id>(chart[get(fim, f)]));
-  if(denoise) internal::write_points(tm, result.points, vim, get_parameter(np, internal_np::denoised_point_map_t()));
+  if(denoise) internal::write_points(tm, result.points, vim, get_parameter(snp, internal_np::denoised_point_map_t()));
   result.time_total_ms = internal::milliseconds_since(start);
   return result;
 }

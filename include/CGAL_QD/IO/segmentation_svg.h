@@ -73,8 +73,12 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::face_descriptor face_descriptor;
   typedef std::array<double, 3> P;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
+  // drawn scaled by a power of two beyond [2^-64, 2^64], where the normals'
+  // cross products overflow (CGAL_QD/internal/point_scale.h)
+  const CGAL_QD::internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{
+      input_vpm, CGAL_QD::internal::normalizing_scale(CGAL_QD::internal::largest_coordinate(vertices(tm), input_vpm))};
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   if(faces(tm).empty()) return Error_code::EMPTY_MESH;
   if(internal::has_non_finite_point<TriangleMesh>(vertices(tm), vpm)) return Error_code::INVALID_COORDINATES;

@@ -67,6 +67,20 @@ struct Lpfb_options
   double constraint_tolerance = 1e-11;  // on closure rows divided by loop length
   double angle_tolerance = 1e-9;        // radians
   bool line_search = true;
+  // identity-Hessian steps converge linearly, slowly where the multipliers are
+  // large (strongly curved borders); from this iteration on the steps use the
+  // Hessian of the Lagrangian (Newton SQP; with line search only)
+  std::size_t newton_after = 20;
+  // Far from a solution (a loop whose 3D shape turns much less than the plane
+  // needs, such as a tube's rim) the linearised closure can ask for steps of
+  // hundreds of radians, after which the iteration wanders among windings of
+  // the border. An iteration that reaches the limit is therefore run again
+  // from the start with no angle changing by more than `retry_max_step` (in
+  // radians) in one step, twice: with the merit's penalty weight set for the
+  // whole step, then for the shortened one. Bounding the steps from the start
+  // would fail where the angle-sum constraints themselves need large changes.
+  double max_step = std::numeric_limits<double>::infinity();
+  double retry_max_step = pi / 2;
 };
 
 enum class Lpfb_status { CONVERGED, NOT_CONVERGED, FAILED };
@@ -105,6 +119,26 @@ public:
 
   Lpfb_solution solve(const Lpfb_options& opt)
   {
+    Lpfb_solution sol = solve_once(opt, opt.max_step, false);
+    // the bounded runs: the merit's penalty weight raised for the unbounded
+    // step, then for the shortened one (which removes only part of the
+    // violation: a larger weight, smaller steps)
+    for(int run = 0; run < 2 && sol.status == Lpfb_status::NOT_CONVERGED && opt.line_search &&
+                     opt.retry_max_step < opt.max_step;
+        ++run) {
+      Lpfb_solution bounded = solve_once(opt, opt.retry_max_step, run == 1);
+      bounded.iterations += sol.iterations;
+      bounded.backtracking_steps += sol.backtracking_steps;
+      if(bounded.status != Lpfb_status::FAILED) sol = bounded;
+    }
+    return sol;
+  }
+
+  const std::vector<double>& loop_lengths() const { return loop_length_; }
+
+private:
+  Lpfb_solution solve_once(const Lpfb_options& opt, double max_step, bool penalise_shortened_steps)
+  {
     Lpfb_solution sol;
     std::vector<double> theta = pb_.target_angle;
     std::vector<double> c_lin(G_), trial_lin(G_);
@@ -119,10 +153,20 @@ public:
       if(!all_finite(theta) || !c_N.allFinite()) { sol.status = Lpfb_status::FAILED; break; }
       for(std::size_t i = 0; i < n_; ++i) r[i] = pb_.target_angle[i] - theta[i];
       assemble_jacobian();
-      if(!step(r, c_lin, c_N, delta)) { sol.status = Lpfb_status::FAILED; break; }
+      const bool newton = opt.line_search && sol.iterations >= opt.newton_after;
+      if(!(newton ? newton_step(theta, c_lin, c_N, delta) : step(r, c_lin, c_N, delta))) {
+        sol.status = Lpfb_status::FAILED;
+        break;
+      }
 
       const double viol = violation_inf(c_lin, c_N);
-      const double step_size = inf_norm(delta);
+      double step_size = inf_norm(delta);
+      double fraction = 1.;  // of the step that satisfies the linearised constraints
+      if(opt.line_search && step_size > max_step) {
+        for(double& d : delta) d *= max_step / step_size;
+        if(penalise_shortened_steps) fraction = max_step / step_size;
+        step_size = max_step;
+      }
 #ifdef CGAL_QD_TRACE_LPFB
       std::cerr << "it " << sol.iterations << " viol " << viol << " step " << step_size << " f " << objective(theta) << " bt " << sol.backtracking_steps << "\n";
 #endif
@@ -144,9 +188,11 @@ public:
       const double c1 = violation_1(c_lin, c_N);
       double g_dot_d = 0, d_dot_d = 0;
       for(std::size_t i = 0; i < n_; ++i) { g_dot_d -= r[i] * delta[i]; d_dot_d += delta[i] * delta[i]; }
-      if(c1 > 0) mu = std::max(mu, 1.1 * (g_dot_d + 0.5 * d_dot_d) / (0.5 * c1));
+      const double curvature = newton ? (std::max)(0., hessian_dot(delta)) : d_dot_d;
+      // a shortened step removes only `fraction` of the violation to first order
+      if(c1 > 0) mu = std::max(mu, 1.1 * (g_dot_d + 0.5 * curvature) / (0.5 * fraction * c1));
       const double merit0 = objective(theta) + mu * c1;
-      const double slope = g_dot_d - mu * c1;  // directional derivative, < 0
+      const double slope = g_dot_d - mu * fraction * c1;  // directional derivative, < 0
 
       auto merit_at = [&](const std::vector<double>& th) {
         evaluate(th, trial_lin, trial_N);
@@ -164,7 +210,8 @@ public:
       // step overshoots along some direction (the constraint curvature adds to
       // the identity Hessian); such a flip-flop can leave the merit unchanged to
       // rounding, so it is detected from the steps and the step is shortened.
-      if(!previous_delta.empty()) {
+      if(newton) step_scale = 1.;
+      else if(!previous_delta.empty()) {
         double dot = 0, pp = 0;
         for(std::size_t i = 0; i < n_; ++i) { dot += delta[i] * previous_delta[i]; pp += previous_delta[i] * previous_delta[i]; }
         const double cosine = dot / std::sqrt(pp * d_dot_d + 1e-300);
@@ -208,9 +255,6 @@ public:
     return sol;
   }
 
-  const std::vector<double>& loop_lengths() const { return loop_length_; }
-
-private:
   static bool all_finite(const std::vector<double>& v)
   {
     for(double x : v) if(!std::isfinite(x)) return false;
@@ -320,6 +364,123 @@ private:
     return true;
   }
 
+  // Newton SQP step: minimise 1/2 d^T H d + g^T d subject to A d + c = 0, with
+  // A = [group rows; N] and H the Hessian of the Lagrangian at the
+  // least-squares multipliers. Since d phi_k / d theta_i = -[k >= i], the
+  // closure rows contribute rank-one terms on nested index sets:
+  // H = I + U D U^T with U_im = [i <= m] and D_m = -(nu_x cos phi_m + nu_y sin phi_m) l_m / L
+  // for an edge m of loop l (0 for a cut edge). With B = U^{-1} (bidiagonal),
+  // H = U (B B^T + D) U^T, so H^{-1} v = B^T T^{-1} B v with T tridiagonal: O(n).
+  // Where H is not positive definite, tau I is added (tau = 0, 1e-3, 1e-2, ...).
+  bool newton_step(const std::vector<double>& theta, const std::vector<double>& c_lin,
+                   const Eigen::VectorXd& c_N, std::vector<double>& delta)
+  {
+    Eigen::VectorXd g(n_), Pg(n_);
+    std::vector<double> gmean(G_, 0.);
+    for(std::size_t i = 0; i < n_; ++i) {
+      g[i] = theta[i] - pb_.target_angle[i];
+      gmean[pb_.corner_group[i]] += g[i];
+    }
+    for(std::size_t g_ = 0; g_ < G_; ++g_) gmean[g_] /= group_size_[g_];
+    for(std::size_t i = 0; i < n_; ++i) Pg[i] = g[i] - gmean[pb_.corner_group[i]];
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> ls(NP_ * NP_.transpose());
+    ls.setThreshold(1e-12);
+    const Eigen::VectorXd nu = -ls.solve(NP_ * Pg);
+    if(!nu.allFinite()) return false;
+    hessian_diagonal_.assign(n_, 0.);
+    for(std::size_t m = 0; m < n_; ++m) {
+      const int l = pb_.edge_loop[m];
+      if(l >= 0)
+        hessian_diagonal_[m] =
+            -(nu[2 * l] * cos_[m] + nu[2 * l + 1] * sin_[m]) * pb_.edge_length[m] / loop_length_[l];
+    }
+    const std::size_t rows = G_ + 2 * K_;
+    Eigen::MatrixXd M(n_, rows), S(rows, rows);  // H^{-1} A^T and A H^{-1} A^T
+    Eigen::VectorXd column(n_), Hg(n_), rhs(rows);
+    for(tau_ = 0.; tau_ < 1e8; tau_ = (tau_ == 0. ? 1e-3 : 10. * tau_)) {
+      std::size_t negative_pivots = 0;
+      if(!factor_tridiagonal(negative_pivots)) continue;
+      for(std::size_t j = 0; j < G_; ++j) {
+        for(std::size_t i = 0; i < n_; ++i) column[i] = (pb_.corner_group[i] == int(j)) ? 1. : 0.;
+        M.col(j) = apply_inverse_hessian(column);
+      }
+      for(int q = 0; q < 2 * K_; ++q) M.col(G_ + q) = apply_inverse_hessian(N_.row(q).transpose());
+      Hg = apply_inverse_hessian(g);
+      S.setZero();
+      for(std::size_t i = 0; i < n_; ++i) S.row(pb_.corner_group[i]) += M.row(i);
+      for(int q = 0; q < 2 * K_; ++q) S.row(G_ + q) = N_.row(q) * M;
+      S = 0.5 * (S + S.transpose()).eval();
+      // the step minimises the quadratic model on the linearised constraints
+      // only if H is positive definite on their null space: by Sylvester's law
+      // of inertia, iff H and S have as many negative eigenvalues (T is
+      // congruent to H, so it has H's)
+      if(negative_pivots > 0) {
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S, Eigen::EigenvaluesOnly);
+        const double scale = es.eigenvalues().cwiseAbs().maxCoeff();
+        std::size_t negative = 0;
+        for(Eigen::Index k = 0; k < es.eigenvalues().size(); ++k)
+          if(es.eigenvalues()[k] < -1e-12 * scale) ++negative;
+        if(negative != negative_pivots) continue;
+      }
+      break;
+    }
+    if(!(tau_ < 1e8)) return false;
+    for(std::size_t j = 0; j < G_; ++j) rhs[j] = c_lin[j];
+    for(std::size_t i = 0; i < n_; ++i) rhs[pb_.corner_group[i]] -= Hg[i];
+    for(int q = 0; q < 2 * K_; ++q) rhs[G_ + q] = c_N[q] - N_.row(q).dot(Hg);
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> kkt(S);
+    kkt.setThreshold(1e-12);
+    const Eigen::VectorXd lambda = kkt.solve(rhs);
+    if(!lambda.allFinite()) return false;
+    const Eigen::VectorXd d = -Hg - M * lambda;
+    if(!d.allFinite()) return false;
+    delta.assign(d.data(), d.data() + n_);
+    return true;
+  }
+
+  // LDL^T of T = (1 + tau) B B^T + D (diagonal 2, ..., 2, 1 and off-diagonal -1
+  // for B B^T), counting the negative pivots; false if a pivot is nearly zero
+  bool factor_tridiagonal(std::size_t& negative_pivots)
+  {
+    negative_pivots = 0;
+    pivot_.assign(n_, 0.);
+    multiplier_.assign(n_, 0.);
+    const double s = 1. + tau_;
+    for(std::size_t i = 0; i < n_; ++i) {
+      const double diag = s * (i + 1 < n_ ? 2. : 1.) + hessian_diagonal_[i];
+      const double off = -s;  // T(i, i-1)
+      const double p = (i == 0) ? diag : diag - multiplier_[i] * multiplier_[i] * pivot_[i - 1];
+      if(!(std::abs(p) > 1e-12 * s)) return false;
+      if(p < 0) ++negative_pivots;
+      pivot_[i] = p;
+      if(i + 1 < n_) multiplier_[i + 1] = off / p;
+    }
+    return true;
+  }
+
+  Eigen::VectorXd apply_inverse_hessian(const Eigen::VectorXd& v) const
+  {
+    Eigen::VectorXd y(n_);
+    for(std::size_t i = 0; i < n_; ++i) y[i] = v[i] - (i + 1 < n_ ? v[i + 1] : 0.);  // B v
+    for(std::size_t i = 1; i < n_; ++i) y[i] -= multiplier_[i] * y[i - 1];         // L^{-1}
+    for(std::size_t i = 0; i < n_; ++i) y[i] /= pivot_[i];                         // D^{-1}
+    for(std::size_t i = n_ - 1; i-- > 0;) y[i] -= multiplier_[i + 1] * y[i + 1];   // L^{-T}
+    Eigen::VectorXd x(n_);
+    for(std::size_t i = 0; i < n_; ++i) x[i] = y[i] - (i > 0 ? y[i - 1] : 0.);     // B^T y
+    return x;
+  }
+
+  // d^T H d for the Hessian of the last Newton step
+  double hessian_dot(const std::vector<double>& d) const
+  {
+    double h = 0, prefix = 0;
+    for(std::size_t m = 0; m < n_; ++m) {
+      prefix += d[m];
+      h += (1. + tau_) * d[m] * d[m] + hessian_diagonal_[m] * prefix * prefix;
+    }
+    return h;
+  }
+
   void layout(const std::vector<double>& theta, std::vector<std::array<double, 2>>& pos) const
   {
     // corner 0 at the origin, edge 0 along +x
@@ -338,6 +499,8 @@ private:
   std::size_t n_ = 0, G_ = 0;
   int K_ = 1;
   std::vector<double> loop_length_, group_size_, cos_, sin_;
+  std::vector<double> hessian_diagonal_, pivot_, multiplier_;  // Newton steps
+  double tau_ = 0;
   Eigen::MatrixXd N_, NP_;
 };
 

@@ -132,8 +132,8 @@ inline void lay_out_assembly_page(const std::vector<IO::Assembly_step>& steps, s
 // (see there); nothing is drawn unless the result's status is OK
 template <class TriangleMesh, class FaceChartMap, class EdgeRange, class NamedParameters>
 IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face_chart,
-                                const std::vector<std::array<double, 2>>& corner_uv, const EdgeRange& seam_edges,
-                                const IO::Pattern_options& options, const NamedParameters& np,
+                                const std::vector<std::array<double, 2>>& input_corner_uv, const EdgeRange& seam_edges,
+                                const IO::Pattern_options& input_options, const NamedParameters& np,
                                 Pattern_drawing& drawing)
 {
   using CGAL::parameters::choose_parameter;
@@ -146,8 +146,24 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 
   IO::Pattern_result result;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
+  // a mesh beyond [2^-64, 2^64] (at 1e200, its areas overflow) is drawn scaled
+  // by a power of two, which is exact; `options.scale` (drawing units per mesh
+  // unit) and the result's scale are converted (CGAL_QD/internal/point_scale.h)
+  double largest = CGAL_QD::internal::largest_coordinate(vertices(tm), input_vpm);
+  for(const auto& p : input_corner_uv) largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1])});
+  const double unit_scale = CGAL_QD::internal::normalizing_scale(largest);
+  const CGAL_QD::internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm,
+                                                                                                     unit_scale};
+  std::vector<std::array<double, 2>> scaled_uv;
+  if(unit_scale != 1.) {
+    scaled_uv = input_corner_uv;
+    for(auto& p : scaled_uv) p = {{p[0] * unit_scale, p[1] * unit_scale}};
+  }
+  const std::vector<std::array<double, 2>>& corner_uv = unit_scale != 1. ? scaled_uv : input_corner_uv;
+  IO::Pattern_options options = input_options;
+  options.scale /= unit_scale;
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
@@ -462,6 +478,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
                 (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
   }
+  result.scale *= unit_scale;  // drawing units per unit of the input mesh
   return result;
 }
 
