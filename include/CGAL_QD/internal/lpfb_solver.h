@@ -37,6 +37,7 @@
 // second-order correction; full steps are kept whenever they decrease the merit.
 
 #include <CGAL_QD/internal/constants.h>
+#include <CGAL_QD/internal/lpfb_hessian.h>
 
 #include <Eigen/Dense>
 
@@ -81,7 +82,25 @@ struct Lpfb_options
   // would fail where the angle-sum constraints themselves need large changes.
   double max_step = std::numeric_limits<double>::infinity();
   double retry_max_step = pi / 2;
+  // an iteration that still does not converge is started again from another
+  // first corner (see Lpfb_solver::solve(); with line search only)
+  bool restart_from_other_corners = true;
 };
+
+// The same problem with corner `first` as corner 0
+inline Lpfb_problem rotate_corner_order(const Lpfb_problem& pb, std::size_t first)
+{
+  const std::size_t n = pb.target_angle.size();
+  Lpfb_problem rotated = pb;
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + first) % n;
+    rotated.target_angle[i] = pb.target_angle[j];
+    rotated.edge_length[i] = pb.edge_length[j];
+    rotated.edge_loop[i] = pb.edge_loop[j];
+    rotated.corner_group[i] = pb.corner_group[j];
+  }
+  return rotated;
+}
 
 enum class Lpfb_status { CONVERGED, NOT_CONVERGED, FAILED };
 
@@ -119,6 +138,45 @@ public:
 
   Lpfb_solution solve(const Lpfb_options& opt)
   {
+    Lpfb_solution sol = solve_from_corner_0(opt);
+    // The iteration's path depends on which corner comes first: the edge
+    // directions are measured from edge 0's, and off the angle-sum constraints
+    // the closure rows of two corner orders are different functions. For a few
+    // orders (7 of the 5,845 rotations of 43 merging trials and patches
+    // collected from the sweep) every run above wanders among windings of the
+    // border, within the iteration limit; started
+    // from the corner halfway round (then a quarter, three quarters round),
+    // the same problem converges. The angles are mapped back and laid out
+    // from corner 0 as usual.
+    const std::size_t starts[] = {n_ / 2, n_ / 4, (3 * n_) / 4};
+    for(std::size_t first : starts) {
+      if(sol.status != Lpfb_status::NOT_CONVERGED || !opt.line_search || !opt.restart_from_other_corners) break;
+      if(first == 0 || first >= n_) continue;
+      const Lpfb_problem rotated = rotate_corner_order(pb_, first);
+      const Lpfb_solution other = Lpfb_solver(rotated).solve_from_corner_0(opt);
+      sol.iterations += other.iterations;
+      sol.backtracking_steps += other.backtracking_steps;
+      if(other.status != Lpfb_status::CONVERGED) continue;
+      std::vector<double> theta(n_);
+      for(std::size_t i = 0; i < n_; ++i) theta[(i + first) % n_] = other.theta[i];
+      std::vector<double> c_lin(G_);
+      Eigen::VectorXd c_N(2 * K_);
+      evaluate(theta, c_lin, c_N);
+      if(!(violation_inf(c_lin, c_N) <= opt.constraint_tolerance)) continue;
+      sol.status = Lpfb_status::CONVERGED;
+      sol.constraint_residual = violation_inf(c_lin, c_N);
+      sol.objective = objective(theta);
+      sol.theta = theta;
+      layout(theta, sol.position);
+    }
+    return sol;
+  }
+
+  const std::vector<double>& loop_lengths() const { return loop_length_; }
+
+private:
+  Lpfb_solution solve_from_corner_0(const Lpfb_options& opt)
+  {
     Lpfb_solution sol = solve_once(opt, opt.max_step, false);
     // the bounded runs: the merit's penalty weight raised for the unbounded
     // step, then for the shortened one (which removes only part of the
@@ -134,9 +192,6 @@ public:
     return sol;
   }
 
-  const std::vector<double>& loop_lengths() const { return loop_length_; }
-
-private:
   Lpfb_solution solve_once(const Lpfb_options& opt, double max_step, bool penalise_shortened_steps)
   {
     Lpfb_solution sol;
@@ -188,7 +243,7 @@ private:
       const double c1 = violation_1(c_lin, c_N);
       double g_dot_d = 0, d_dot_d = 0;
       for(std::size_t i = 0; i < n_; ++i) { g_dot_d -= r[i] * delta[i]; d_dot_d += delta[i] * delta[i]; }
-      const double curvature = newton ? (std::max)(0., hessian_dot(delta)) : d_dot_d;
+      const double curvature = newton ? (std::max)(0., hessian_.dot(delta)) : d_dot_d;
       // a shortened step removes only `fraction` of the violation to first order
       if(c1 > 0) mu = std::max(mu, 1.1 * (g_dot_d + 0.5 * curvature) / (0.5 * fraction * c1));
       const double merit0 = objective(theta) + mu * c1;
@@ -339,6 +394,19 @@ private:
     }
   }
 
+  // The least-squares solution of minimum norm of S x = b, with the pivots
+  // below 1e-12 of the largest taken as zero. The threshold must be set before
+  // the decomposition: compute() forms the Householder coefficients of Z for
+  // the rank it sees, and a threshold raised afterwards makes solve() use a
+  // smaller rank with coefficients that were never formed.
+  static Eigen::VectorXd minimum_norm_solve(const Eigen::MatrixXd& S, const Eigen::VectorXd& b)
+  {
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(S.rows(), S.cols());
+    cod.setThreshold(1e-12);
+    cod.compute(S);
+    return cod.solve(b);
+  }
+
   // delta = r - L^+ (L r + c) with L = [group rows; N]
   bool step(const std::vector<double>& r, const std::vector<double>& c_lin,
             const Eigen::VectorXd& c_N, std::vector<double>& delta)
@@ -355,9 +423,7 @@ private:
     }
     const Eigen::VectorXd rhs = NP_ * Pr + c_N + N_ * dp;
     const Eigen::MatrixXd S = NP_ * NP_.transpose();
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(S);
-    cod.setThreshold(1e-12);
-    const Eigen::VectorXd lambda = cod.solve(rhs);
+    const Eigen::VectorXd lambda = minimum_norm_solve(S, rhs);
     if(!lambda.allFinite()) return false;
     const Eigen::VectorXd d = dp + Pr - NP_.transpose() * lambda;
     delta.assign(d.data(), d.data() + n_);
@@ -369,9 +435,9 @@ private:
   // least-squares multipliers. Since d phi_k / d theta_i = -[k >= i], the
   // closure rows contribute rank-one terms on nested index sets:
   // H = I + U D U^T with U_im = [i <= m] and D_m = -(nu_x cos phi_m + nu_y sin phi_m) l_m / L
-  // for an edge m of loop l (0 for a cut edge). With B = U^{-1} (bidiagonal),
-  // H = U (B B^T + D) U^T, so H^{-1} v = B^T T^{-1} B v with T tridiagonal: O(n).
-  // Where H is not positive definite, tau I is added (tau = 0, 1e-3, 1e-2, ...).
+  // for an edge m of loop l (0 for a cut edge); solves with H cost O(n)
+  // (internal/lpfb_hessian.h). Where H is not positive definite on the null
+  // space of A, tau I is added (tau = 0, 1e-3, 1e-2, ...).
   bool newton_step(const std::vector<double>& theta, const std::vector<double>& c_lin,
                    const Eigen::VectorXd& c_N, std::vector<double>& delta)
   {
@@ -383,29 +449,28 @@ private:
     }
     for(std::size_t g_ = 0; g_ < G_; ++g_) gmean[g_] /= group_size_[g_];
     for(std::size_t i = 0; i < n_; ++i) Pg[i] = g[i] - gmean[pb_.corner_group[i]];
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> ls(NP_ * NP_.transpose());
-    ls.setThreshold(1e-12);
-    const Eigen::VectorXd nu = -ls.solve(NP_ * Pg);
+    const Eigen::VectorXd nu = -minimum_norm_solve(NP_ * NP_.transpose(), NP_ * Pg);
     if(!nu.allFinite()) return false;
-    hessian_diagonal_.assign(n_, 0.);
+    std::vector<double> hessian_diagonal(n_, 0.);
     for(std::size_t m = 0; m < n_; ++m) {
       const int l = pb_.edge_loop[m];
       if(l >= 0)
-        hessian_diagonal_[m] =
+        hessian_diagonal[m] =
             -(nu[2 * l] * cos_[m] + nu[2 * l + 1] * sin_[m]) * pb_.edge_length[m] / loop_length_[l];
     }
     const std::size_t rows = G_ + 2 * K_;
     Eigen::MatrixXd M(n_, rows), S(rows, rows);  // H^{-1} A^T and A H^{-1} A^T
     Eigen::VectorXd column(n_), Hg(n_), rhs(rows);
-    for(tau_ = 0.; tau_ < 1e8; tau_ = (tau_ == 0. ? 1e-3 : 10. * tau_)) {
+    double tau = 0.;
+    for(; tau < 1e8; tau = (tau == 0. ? 1e-3 : 10. * tau)) {
       std::size_t negative_pivots = 0;
-      if(!factor_tridiagonal(negative_pivots)) continue;
+      if(!hessian_.factor(hessian_diagonal, tau, negative_pivots)) continue;
       for(std::size_t j = 0; j < G_; ++j) {
         for(std::size_t i = 0; i < n_; ++i) column[i] = (pb_.corner_group[i] == int(j)) ? 1. : 0.;
-        M.col(j) = apply_inverse_hessian(column);
+        M.col(j) = hessian_.solve(column);
       }
-      for(int q = 0; q < 2 * K_; ++q) M.col(G_ + q) = apply_inverse_hessian(N_.row(q).transpose());
-      Hg = apply_inverse_hessian(g);
+      for(int q = 0; q < 2 * K_; ++q) M.col(G_ + q) = hessian_.solve(N_.row(q).transpose());
+      Hg = hessian_.solve(g);
       S.setZero();
       for(std::size_t i = 0; i < n_; ++i) S.row(pb_.corner_group[i]) += M.row(i);
       for(int q = 0; q < 2 * K_; ++q) S.row(G_ + q) = N_.row(q) * M;
@@ -424,61 +489,16 @@ private:
       }
       break;
     }
-    if(!(tau_ < 1e8)) return false;
+    if(!(tau < 1e8)) return false;
     for(std::size_t j = 0; j < G_; ++j) rhs[j] = c_lin[j];
     for(std::size_t i = 0; i < n_; ++i) rhs[pb_.corner_group[i]] -= Hg[i];
     for(int q = 0; q < 2 * K_; ++q) rhs[G_ + q] = c_N[q] - N_.row(q).dot(Hg);
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> kkt(S);
-    kkt.setThreshold(1e-12);
-    const Eigen::VectorXd lambda = kkt.solve(rhs);
+    const Eigen::VectorXd lambda = minimum_norm_solve(S, rhs);
     if(!lambda.allFinite()) return false;
     const Eigen::VectorXd d = -Hg - M * lambda;
     if(!d.allFinite()) return false;
     delta.assign(d.data(), d.data() + n_);
     return true;
-  }
-
-  // LDL^T of T = (1 + tau) B B^T + D (diagonal 2, ..., 2, 1 and off-diagonal -1
-  // for B B^T), counting the negative pivots; false if a pivot is nearly zero
-  bool factor_tridiagonal(std::size_t& negative_pivots)
-  {
-    negative_pivots = 0;
-    pivot_.assign(n_, 0.);
-    multiplier_.assign(n_, 0.);
-    const double s = 1. + tau_;
-    for(std::size_t i = 0; i < n_; ++i) {
-      const double diag = s * (i + 1 < n_ ? 2. : 1.) + hessian_diagonal_[i];
-      const double off = -s;  // T(i, i-1)
-      const double p = (i == 0) ? diag : diag - multiplier_[i] * multiplier_[i] * pivot_[i - 1];
-      if(!(std::abs(p) > 1e-12 * s)) return false;
-      if(p < 0) ++negative_pivots;
-      pivot_[i] = p;
-      if(i + 1 < n_) multiplier_[i + 1] = off / p;
-    }
-    return true;
-  }
-
-  Eigen::VectorXd apply_inverse_hessian(const Eigen::VectorXd& v) const
-  {
-    Eigen::VectorXd y(n_);
-    for(std::size_t i = 0; i < n_; ++i) y[i] = v[i] - (i + 1 < n_ ? v[i + 1] : 0.);  // B v
-    for(std::size_t i = 1; i < n_; ++i) y[i] -= multiplier_[i] * y[i - 1];         // L^{-1}
-    for(std::size_t i = 0; i < n_; ++i) y[i] /= pivot_[i];                         // D^{-1}
-    for(std::size_t i = n_ - 1; i-- > 0;) y[i] -= multiplier_[i + 1] * y[i + 1];   // L^{-T}
-    Eigen::VectorXd x(n_);
-    for(std::size_t i = 0; i < n_; ++i) x[i] = y[i] - (i > 0 ? y[i - 1] : 0.);     // B^T y
-    return x;
-  }
-
-  // d^T H d for the Hessian of the last Newton step
-  double hessian_dot(const std::vector<double>& d) const
-  {
-    double h = 0, prefix = 0;
-    for(std::size_t m = 0; m < n_; ++m) {
-      prefix += d[m];
-      h += (1. + tau_) * d[m] * d[m] + hessian_diagonal_[m] * prefix * prefix;
-    }
-    return h;
   }
 
   void layout(const std::vector<double>& theta, std::vector<std::array<double, 2>>& pos) const
@@ -499,8 +519,7 @@ private:
   std::size_t n_ = 0, G_ = 0;
   int K_ = 1;
   std::vector<double> loop_length_, group_size_, cos_, sin_;
-  std::vector<double> hessian_diagonal_, pivot_, multiplier_;  // Newton steps
-  double tau_ = 0;
+  Nested_rank_one_hessian hessian_;  // of the last Newton step
   Eigen::MatrixXd N_, NP_;
 };
 
