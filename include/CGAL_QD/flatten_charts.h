@@ -10,8 +10,9 @@
 /// sides of every seam given a common length where the charts allow it.
 
 #include <CGAL_QD/Error_code.h>
-#include <CGAL_QD/chart_merging.h>
+#include <CGAL_QD/chart_criterion.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/vsa_segmentation.h>

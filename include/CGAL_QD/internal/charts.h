@@ -135,6 +135,15 @@ void write_points(const TriangleMesh& tm, const std::vector<std::array<double, 3
   }
 }
 
+// The points of `tm` by vertex index
+template <class TriangleMesh, class VPM, class VIM>
+std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const VPM& vpm, const VIM& vim)
+{
+  std::vector<std::array<double, 3>> points(num_vertices(tm));
+  for(auto v : vertices(tm)) points[get(vim, v)] = point_of<TriangleMesh>(v, vpm);
+  return points;
+}
+
 } // namespace internal
 } // namespace CGAL_QD
 

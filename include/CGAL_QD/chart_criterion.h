@@ -1,0 +1,406 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_CHART_CRITERION_H
+#define CGAL_QD_CHART_CRITERION_H
+
+/// \file chart_criterion.h
+/// How the segmentation flattens one chart and decides whether it is within
+/// the thresholds: `Chart_criterion`, the `Chart_report` of a chart, and the
+/// evaluator that the splitting, the merging (chart_merging.h) and the final
+/// flattening (flatten_charts.h) share.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/distortion.h>
+#include <CGAL_QD/extract_chart.h>
+#include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/optimize_flattening.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/charts.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// how the segmentation flattens a chart and decides whether it is within the thresholds.
+enum class Chart_criterion
+{
+  /// the paper's (Section 4.2): the LPFB+IP flattening, accepted when A(Omega) <= `max_area_distortion`,
+  /// L2 <= `max_l2_stretch` and there is no overlap
+  LPFB_IP,
+  /// LPFB+IP, then the free-boundary ARAP of `optimize_flattening()` started from it; a flattening is
+  /// accepted when A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch`, A_loc <=
+  /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
+  /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
+  /// the final flattening, continued up to 300 and started again from LSCM for at most 300 where that is
+  /// still not accepted). The final flattening of every chart then gives the two sides of every seam
+  /// curve a common length (the mean of their lengths in the free maps) and gives every border edge its
+  /// share of it exactly (`Arap_border::LENGTH_PRESERVED`) where the chart stays within the thresholds,
+  /// or else pulls the border towards those lengths (`Arap_border::KEEP_LENGTHS`). The splitting and the
+  /// merging of `segment_quasi_developable()` accept a chart only 5 % below `max_local_area_distortion`,
+  /// which leaves room for this fit and for the seam smoothing; the final charts are measured against the
+  /// bound itself.
+  LPFB_IP_THEN_ARAP
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// how one chart flattens, cut open along its seams and cuts.
+struct Chart_report
+{
+  /// `OK`, or why the chart could not be flattened (`NOT_A_DISK` for a chart with a handle, ...)
+  Error_code status = Error_code::OK;
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_border_loops = 0;  ///< of the chart cut open
+  double area = 0;                         ///< 3D area
+  double area_distortion = 0;              ///< A(Omega), in percent
+  double l2_stretch = 0;                   ///< Sander's L2 stretch (not normalised: LPFB keeps the border lengths)
+  double local_area_distortion = 0;        ///< A_loc, in percent
+  /// the largest |l_2D - l_3D| / l_3D over the border edges of the flattening (with matched lengths, the
+  /// seams' common lengths differ from the 3D ones)
+  double max_border_length_error = 0;
+  bool overlap = false;                    ///< S(Omega): a flipped face, a branch vertex or a border crossing
+  /// whether the flattening is the optimised one (`Chart_criterion::LPFB_IP_THEN_ARAP`), not LPFB+IP
+  bool optimized = false;
+  /// whether every border edge has exactly (up to the border solver's tolerance) its share of the
+  /// length common to the two sides of its seam (the final flattening with
+  /// `Chart_criterion::LPFB_IP_THEN_ARAP`); LPFB+IP gives them their 3D lengths
+  bool lengths_matched = false;
+  /// whether the chart is within the thresholds: status `OK`, A(Omega) and L2 at most the thresholds, no overlap
+  bool accepted = false;
+  /// whether every seam curve along the chart has its two sides within 0.5 % of each other in the
+  /// final flattening (`Chart_flattening_result::seam_curves_matched`); true for a chart without seams
+  bool seams_matched = true;
+};
+
+namespace internal {
+
+struct Merge_thresholds
+{
+  double max_area_distortion = 0.10;  // fraction
+  double max_l2_stretch = 2.0;
+  double max_local_area_distortion = 0.025;  // fraction
+  Chart_criterion criterion = Chart_criterion::LPFB_IP_THEN_ARAP;
+  // the border of the optimised flattening of a trial: FREE or KEEP_LENGTHS
+  Arap_border arap_border = Arap_border::FREE;
+  double border_length_weight = 10.;
+  // the two sides of a cut inside a developable chart develop onto each other:
+  // they touch, which is not an overlap
+  double overlap_tolerance = 1e-9;
+};
+
+// Flattens a set of faces of `tm` cut open along the cut edges, by LPFB+IP,
+// and measures the result. Thread-safe: `evaluate` only reads shared data
+// (and takes a scratch buffer from a pool under a lock).
+template <class TriangleMesh, class FIM, class VIM>
+class Chart_evaluator
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+  Chart_evaluator(const TriangleMesh& tm, const FIM& fim, const VIM& vim,
+                  const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds)
+      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds)
+  {}
+
+  // evaluations whose LPFB reached its iteration limit
+  std::size_t lpfb_not_converged() const { return m_not_converged.load(); }
+
+  // `faces` in increasing face index; `corner_uv`, if given, receives the UVs
+  // of the corners (3 per face, in the order of `faces`). `border_target`, if
+  // given, holds per corner the target 2D length of the edge that ends at it
+  // (used for the border edges of the chart cut open), and `start_uv` the
+  // chart's flattening by corner, fitted to those lengths instead of
+  // flattening the chart again.
+  template <class IsCut>
+  Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
+                        std::vector<std::array<double, 2>>* corner_uv = nullptr,
+                        const std::vector<double>* border_target = nullptr,
+                        const std::vector<std::array<double, 2>>* start_uv = nullptr) const
+  {
+    Chart_report rep;
+    rep.number_of_faces = faces.size();
+    Wedges<TriangleMesh> wedges;
+    {
+      // the position of every face of the set, in a buffer kept between
+      // trials: a trial sets and resets only its own faces
+      Scratch_buffer local(*this);
+      for(std::size_t i = 0; i < faces.size(); ++i) (*local)[get(m_fim, faces[i])] = static_cast<long>(i);
+      compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
+      for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
+    }
+    Mesh sm;
+    sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
+               static_cast<typename Mesh::size_type>(3 * faces.size()),
+               static_cast<typename Mesh::size_type>(faces.size()));
+    for(std::size_t w = 0; w < wedges.size(); ++w) {
+      const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
+      sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
+    }
+    for(std::size_t i = 0; i < faces.size(); ++i) {
+      typedef typename Mesh::Vertex_index V;
+      const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
+                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
+                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 2])));
+      if(f == Mesh::null_face()) {
+        rep.status = Error_code::NON_MANIFOLD;
+        return rep;
+      }
+      rep.area += double_area3(m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i]])],
+                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 1]])],
+                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 2]])]) / 2;
+    }
+    typedef typename Mesh::Vertex_index V;
+    auto uv = sm.template add_property_map<V, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
+    auto write_corner_uv = [&] {
+      if(!corner_uv) return;
+      corner_uv->resize(3 * faces.size());
+      for(std::size_t c = 0; c < 3 * faces.size(); ++c) {
+        const K::Point_2& p = get(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])));
+        (*corner_uv)[c] = {p.x(), p.y()};
+      }
+    };
+    if(border_target) {
+      // the chart's flattening `start_uv` with its border edges given the
+      // target lengths: the seams of the pieces match
+      for(std::size_t c = 0; c < 3 * faces.size(); ++c)
+        put(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])),
+            K::Point_2((*start_uv)[c][0], (*start_uv)[c][1]));
+      auto goal = sm.template add_property_map<typename Mesh::Edge_index, double>("e:goal", 0.).first;
+      for(std::size_t i = 0; i < faces.size(); ++i)
+        for(auto h : CGAL::halfedges_around_face(halfedge(typename Mesh::Face_index(
+                                                     static_cast<typename Mesh::size_type>(i)), sm), sm)) {
+          int k = 0;
+          while(k < 2 && wedges.wedge_of_corner[3 * i + k] != std::size_t(target(h, sm))) ++k;
+          put(goal, edge(h, sm), (*border_target)[3 * i + k]);
+        }
+      for(auto h : halfedges(sm))  // the border loops, each counted at its smallest halfedge
+        if(is_border(h, sm)) {
+          auto g = next(h, sm);
+          while(g != h && h < g) g = next(g, sm);
+          if(g == h) ++rep.number_of_border_loops;
+        }
+      // first every border edge at exactly its target length (the border
+      // angles of the flattening kept as closely as the closure allows, the
+      // interior fitted again); where that leaves the thresholds, the border
+      // pulled towards the targets
+      auto exact = sm.template add_property_map<V, K::Point_2>("v:exact", K::Point_2(0, 0)).first;
+      for(auto v : vertices(sm)) put(exact, v, get(uv, v));
+      const Optimization_result e = optimize_flattening(
+          sm, exact,
+          parameters::arap_border(Arap_border::LENGTH_PRESERVED, parameters::border_edge_length_map(goal)));
+      Chart_report exact_rep = rep;
+      if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
+        exact_rep.optimized = exact_rep.lengths_matched = true;
+        for(auto v : vertices(sm)) put(uv, v, get(exact, v));
+        write_corner_uv();
+        return exact_rep;
+      }
+      const Optimization_result o = optimize_flattening(
+          sm, uv,
+          parameters::arap_border(Arap_border::KEEP_LENGTHS,
+                                  parameters::border_edge_length_map(goal, parameters::border_length_weight(1000.))));
+      if(o && measure(sm, uv, rep)) {
+        rep.optimized = true;
+        write_corner_uv();
+      } else {
+        rep.accepted = false;  // the caller keeps its earlier flattening
+      }
+      return rep;
+    }
+    const Flattening_result flat = flatten_patch(sm, uv);
+    rep.number_of_border_loops = flat.border.number_of_loops;
+    if(!flat) {
+      rep.status = flat.status;
+      if(flat.status == Error_code::NOT_CONVERGED) ++m_not_converged;
+      return rep;
+    }
+    if(!measure(sm, uv, rep)) return rep;
+    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
+    // an optimised flattening `map` replaces the flattening of `rep` when it is
+    // accepted and that one is not, or when both are and it has less local
+    // area distortion
+    auto better = [&](const auto& map, const Optimization_result& r) {
+      Chart_report candidate = rep;
+      if(!r || !measure(sm, map, candidate) || !candidate.accepted ||
+         (rep.accepted && !(candidate.local_area_distortion < rep.local_area_distortion)))
+        return false;
+      candidate.optimized = true;
+      rep = candidate;
+      return true;
+    };
+    auto last = uv;       // the latest optimisation started from LPFB+IP
+    bool capped = false;  // whether it stopped at its iteration cap
+    if(!paper && (!rep.accepted || corner_uv)) {
+      // free-boundary ARAP started from LPFB+IP
+      auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
+      for(auto v : vertices(sm)) put(opt, v, get(uv, v));
+      const Optimization_result o = optimize_flattening(sm, opt, trial_parameters());
+      last = opt;
+      capped = o && o.iterations == 30;
+      if(better(opt, o)) uv = opt;
+      // a trial stops after 30 iterations; a final flattening goes on until it
+      // converges (at most 70 more), kept if it is still accepted and better
+      if(corner_uv && o && o.iterations == 30) {
+        // on a copy: `uv` may now be the same map as `opt`
+        auto more = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:more", K::Point_2(0, 0)).first;
+        for(auto v : vertices(sm)) put(more, v, get(opt, v));
+        const Optimization_result r = optimize_flattening(sm, more, trial_parameters().number_of_iterations(70));
+        last = more;
+        capped = r && r.iterations == 70;
+        if(better(more, r)) uv = more;
+      }
+    }
+    if(!paper && corner_uv && !rep.accepted) {
+      // a final flattening still outside the thresholds: the optimisation
+      // from LPFB+IP goes on where it stopped at its cap (at most 300
+      // iterations in all), and, for a chart with one border loop, one is
+      // started from LSCM (at most 300 iterations)
+      auto again = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:again", K::Point_2(0, 0)).first;
+      for(int start = 0; start < 2; ++start) {
+        std::size_t iterations = 300;
+        if(start == 0) {
+          if(!capped) continue;  // it converged: going on would give the same map
+          for(auto v : vertices(sm)) put(again, v, get(last, v));
+          iterations = 200;
+        } else {
+          typename Mesh::Halfedge_index border;
+          for(auto h : halfedges(sm))
+            if(is_border(h, sm)) {
+              border = h;
+              break;
+            }
+          if(rep.number_of_border_loops != 1 || border == Mesh::null_halfedge() ||
+             CGAL::Surface_mesh_parameterization::parameterize(
+                 sm, CGAL::Surface_mesh_parameterization::LSCM_parameterizer_3<Mesh>(), border, again) !=
+                 CGAL::Surface_mesh_parameterization::OK)
+            break;
+        }
+        if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(iterations))))
+          for(auto v : vertices(sm)) put(uv, v, get(again, v));  // a copy: `again` is used again
+      }
+    }
+    write_corner_uv();
+    return rep;
+  }
+
+private:
+  // a face-index buffer of the mesh's size, all -1, taken from the
+  // evaluator's pool for one trial and given back (all -1 again) after it
+  class Scratch_buffer
+  {
+  public:
+    explicit Scratch_buffer(const Chart_evaluator& e) : m_e(e)
+    {
+      {
+        std::lock_guard<std::mutex> lock(m_e.m_scratch_mutex);
+        if(!m_e.m_scratch.empty()) {
+          m_buffer = std::move(m_e.m_scratch.back());
+          m_e.m_scratch.pop_back();
+        }
+      }
+      if(!m_buffer) m_buffer.reset(new std::vector<long>(num_faces(m_e.m_tm), -1));
+    }
+    ~Scratch_buffer()
+    {
+      std::lock_guard<std::mutex> lock(m_e.m_scratch_mutex);
+      m_e.m_scratch.push_back(std::move(m_buffer));
+    }
+    Scratch_buffer(const Scratch_buffer&) = delete;
+    Scratch_buffer& operator=(const Scratch_buffer&) = delete;
+    std::vector<long>& operator*() { return *m_buffer; }
+
+  private:
+    const Chart_evaluator& m_e;
+    std::unique_ptr<std::vector<long>> m_buffer;
+  };
+
+  auto trial_parameters() const
+  {
+    return parameters::arap_border(m_thresholds.arap_border,
+                                   parameters::border_length_weight(m_thresholds.border_length_weight));
+  }
+
+  // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
+  template <class UVMap>
+  bool measure(const Mesh& sm, const UVMap& uv, Chart_report& rep) const
+  {
+    const Distortion_report<Mesh> d =
+        compute_distortion(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
+    if(!d) {
+      rep.status = d.status;
+      rep.accepted = false;
+      return false;
+    }
+    rep.area_distortion = d.area_distortion;
+    rep.l2_stretch = d.l2_stretch;
+    rep.local_area_distortion = d.local_area_distortion;
+    rep.overlap = d.overlap;
+    rep.max_border_length_error = 0;
+    for(auto h : halfedges(sm))
+      if(is_border(h, sm)) {
+        const K::Point_3 &p = sm.point(source(h, sm)), &q = sm.point(target(h, sm));
+        const double l3 = std::sqrt(CGAL::squared_distance(p, q));
+        const double l2 = std::sqrt(CGAL::squared_distance(get(uv, source(h, sm)), get(uv, target(h, sm))));
+        rep.max_border_length_error = (std::max)(rep.max_border_length_error, std::abs(l2 - l3) / l3);
+      }
+    rep.accepted = rep.area_distortion <= 100. * m_thresholds.max_area_distortion &&
+                   rep.l2_stretch <= m_thresholds.max_l2_stretch && !rep.overlap &&
+                   (m_thresholds.criterion == Chart_criterion::LPFB_IP ||
+                    rep.local_area_distortion <= 100. * m_thresholds.max_local_area_distortion);
+    return true;
+  }
+
+  const TriangleMesh& m_tm;
+  FIM m_fim;
+  VIM m_vim;
+  const std::vector<std::array<double, 3>>& m_points;
+  Merge_thresholds m_thresholds;
+  mutable std::atomic<std::size_t> m_not_converged{0};
+  mutable std::mutex m_scratch_mutex;
+  mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
+};
+
+template <class TriangleMesh, class NamedParameters>
+Merge_thresholds merge_thresholds_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Merge_thresholds t;
+  t.max_area_distortion = choose_parameter(get_parameter(np, internal_np::max_area_distortion_t()), t.max_area_distortion);
+  t.max_l2_stretch = choose_parameter(get_parameter(np, internal_np::max_l2_stretch_t()), t.max_l2_stretch);
+  t.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), t.overlap_tolerance);
+  t.max_local_area_distortion = choose_parameter(get_parameter(np, internal_np::max_local_area_distortion_t()),
+                                                 t.max_local_area_distortion);
+  t.criterion = choose_parameter(get_parameter(np, internal_np::chart_criterion_t()), t.criterion);
+  t.arap_border = choose_parameter(get_parameter(np, internal_np::arap_border_t()), t.arap_border);
+  t.border_length_weight =
+      choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), t.border_length_weight);
+  return t;
+}
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_CHART_CRITERION_H
