@@ -14,6 +14,7 @@
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/parallel.h>
+#include <CGAL_QD/internal/union_find.h>
 #include <CGAL_QD/vsa_segmentation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -205,12 +206,7 @@ public:
       if(is_border_edge(h, m_tm)) continue;
       if(chart_of(h) != chart_of(opposite(h, m_tm))) border.push_back(h);
     }
-    std::vector<std::size_t> parent(border.size());
-    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-    auto find = [&](std::size_t x) {
-      while(parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
+    Union_find chains(border.size());
     auto pair_of = [&](halfedge_descriptor h) {
       const std::size_t x = chart_of(h), y = chart_of(opposite(h, m_tm));
       return std::make_pair((std::min)(x, y), (std::max)(x, y));
@@ -225,12 +221,11 @@ public:
         for(halfedge_descriptor h : CGAL::halfedges_around_target(end, m_tm)) {
           const long j = edge_at[get(m_him, h)];
           if(j < 0 || std::size_t(j) == i || pair_of(border[j]) != pair_of(border[i])) continue;
-          const std::size_t x = find(i), y = find(std::size_t(j));
-          if(x != y) parent[(std::max)(x, y)] = (std::min)(x, y);
+          chains.unite(i, std::size_t(j));
         }
     std::vector<long> curve_of_root(border.size(), -1);
     for(std::size_t i = 0; i < border.size(); ++i) {
-      const std::size_t r = find(i);
+      const std::size_t r = chains.find(i);
       if(curve_of_root[r] < 0) {
         curve_of_root[r] = static_cast<long>(m_curves.size());
         Curve c;
@@ -258,14 +253,11 @@ public:
   std::pair<std::size_t, std::size_t> merge(const std::vector<Face_geometry>& geo, const Progress& progress,
                                             bool verbose, bool run = true)
   {
-    m_parent.resize(m_n);
+    m_sets.reset(m_n);
     m_members.assign(m_n, {});
     m_area.assign(m_n, 0.);
     m_version.assign(m_n, 0);
-    for(std::size_t k = 0; k < m_n; ++k) {
-      m_parent[k] = k;
-      m_members[k].push_back(k);
-    }
+    for(std::size_t k = 0; k < m_n; ++k) m_members[k].push_back(k);
     m_faces_of_chart.assign(m_n, {});
     for(std::size_t i = 0; i < m_chart.size(); ++i) {
       m_faces_of_chart[m_chart[i]].push_back(m_face_of[i]);
@@ -398,11 +390,7 @@ public:
 private:
   std::size_t chart_of(halfedge_descriptor h) const { return m_chart[get(m_fim, face(h, m_tm))]; }
 
-  std::size_t find(std::size_t x) const
-  {
-    while(m_parent[x] != x) x = m_parent[x];
-    return x;
-  }
+  std::size_t find(std::size_t x) const { return m_sets.root(x); }
 
   double key(std::size_t c) const
   {
@@ -440,7 +428,7 @@ private:
     std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
     if(r1 != r2) {
       if(r2 < r1) std::swap(r1, r2);
-      m_parent[r2] = r1;
+      m_sets.unite(r1, r2);
       m_members[r1].insert(m_members[r1].end(), m_members[r2].begin(), m_members[r2].end());
       m_members[r2].clear();
       m_area[r1] += m_area[r2];
@@ -462,7 +450,8 @@ private:
   std::vector<long> m_curve_of;  // by halfedge index
   std::vector<Curve> m_curves;
   std::vector<std::vector<std::size_t>> m_curves_of_chart;
-  std::vector<std::size_t> m_parent, m_version;
+  Union_find m_sets;  // of charts
+  std::vector<std::size_t> m_version;
   std::vector<std::vector<std::size_t>> m_members;
   std::vector<std::vector<face_descriptor>> m_faces_of_chart;
   std::vector<double> m_area;

@@ -9,6 +9,7 @@
 /// with the other charts and along the cut edges inside the chart.
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/internal/union_find.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -54,18 +55,7 @@ void compute_wedges(const TriangleMesh& tm, const FIM& fim,
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   const std::size_t nc = 3 * faces.size();
-  std::vector<std::size_t> parent(nc);
-  for(std::size_t i = 0; i < nc; ++i) parent[i] = i;
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  auto unite = [&](std::size_t x, std::size_t y) {
-    x = find(x);
-    y = find(y);
-    if(x < y) parent[y] = x;
-    else if(y < x) parent[x] = y;
-  };
+  Union_find sets(nc);
   // the corner of halfedge h, whose face is in the set
   auto corner = [&](halfedge_descriptor h) {
     const auto f = face(h, tm);
@@ -77,14 +67,14 @@ void compute_wedges(const TriangleMesh& tm, const FIM& fim,
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(faces[i], tm), tm)) {
       const halfedge_descriptor o = opposite(h, tm);
       if(is_border(o, tm) || local[get(fim, face(o, tm))] < 0 || is_cut(h)) continue;
-      unite(corner(h), corner(prev(o, tm)));  // at target(h)
-      unite(corner(prev(h, tm)), corner(o));  // at source(h)
+      sets.unite(corner(h), corner(prev(o, tm)));  // at target(h)
+      sets.unite(corner(prev(h, tm)), corner(o));  // at source(h)
     }
   out.wedge_of_corner.assign(nc, 0);
   out.vertex_of_wedge.clear();
   std::vector<std::size_t> id(nc, std::size_t(-1));
   for(std::size_t c = 0; c < nc; ++c) {
-    const std::size_t r = find(c);
+    const std::size_t r = sets.find(c);
     if(id[r] == std::size_t(-1)) {
       id[r] = out.vertex_of_wedge.size();
       halfedge_descriptor h = halfedge(faces[c / 3], tm);

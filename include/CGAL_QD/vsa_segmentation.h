@@ -13,6 +13,7 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/union_find.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -269,12 +270,7 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
     const double sx = sum[x][0] + sum[y][0], sy = sum[x][1] + sum[y][1], sz = sum[x][2] + sum[y][2];
     return 2. - 2. * std::sqrt(sx * sx + sy * sy + sz * sz) / (sum[x][3] + sum[y][3]);
   };
-  std::vector<std::size_t> parent(n);
-  for(std::size_t i = 0; i < n; ++i) parent[i] = i;
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  Union_find sets(n);
   std::vector<std::set<std::size_t>> adjacent(n);
   for(typename GT::halfedge_descriptor h : halfedges(tm)) {
     if(is_border_edge(h, tm)) continue;
@@ -290,19 +286,19 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
     const Candidate c = queue.top();
     queue.pop();
     const std::size_t x = std::get<1>(c), y = std::get<2>(c);
-    if(find(x) != x || find(y) != y) continue;          // merged since
+    if(sets.find(x) != x || sets.find(y) != y) continue;          // merged since
     if(std::get<0>(c) != merged_error(x, y)) continue;  // stale
     if(std::get<0>(c) > tolerance) break;
-    parent[y] = x;
+    sets.unite(x, y);  // x < y: x stays the root
     for(int i = 0; i < 4; ++i) sum[x][i] += sum[y][i];
     for(std::size_t z : adjacent[y]) adjacent[x].insert(z);
     std::set<std::size_t> roots;
     for(std::size_t z : adjacent[x])
-      if(find(z) != x) roots.insert(find(z));
+      if(sets.find(z) != x) roots.insert(sets.find(z));
     adjacent[x] = roots;
     for(std::size_t z : roots) queue.emplace(merged_error(x, z), (std::min)(x, z), (std::max)(x, z));
   }
-  for(std::size_t& k : chart) k = find(k);
+  for(std::size_t& k : chart) k = sets.find(k);
   return make_charts_connected(tm, fim, chart);
 }
 

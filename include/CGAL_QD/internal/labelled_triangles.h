@@ -8,6 +8,8 @@
 // topology of the triangles of one label: what the seam smoothing compares
 // before and after a planned cut, without touching the mesh.
 
+#include <CGAL_QD/internal/union_find.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -68,13 +70,8 @@ inline Labelled_topology labelled_topology(const std::vector<Labelled_triangle>&
   }
   std::sort(edge_tri.begin(), edge_tri.end());
   // union-find on the triangles (components through edges) and on the nodes (border loops)
-  std::vector<std::size_t> parent(tris.size()), border_parent(number_of_nodes), border_degree(number_of_nodes, 0);
-  for(std::size_t i = 0; i < tris.size(); ++i) parent[i] = i;
-  for(std::size_t x = 0; x < number_of_nodes; ++x) border_parent[x] = x;
-  auto find = [](std::vector<std::size_t>& p, std::size_t x) {
-    while(p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  };
+  Union_find components(tris.size()), loops(number_of_nodes);
+  std::vector<std::size_t> border_degree(number_of_nodes, 0);
   std::size_t edges = 0;
   for(std::size_t first = 0; first < edge_tri.size();) {
     std::size_t last = first + 1;
@@ -82,22 +79,22 @@ inline Labelled_topology labelled_topology(const std::vector<Labelled_triangle>&
     ++edges;
     if(last - first >= 2) {
       for(std::size_t k = first + 1; k < last; ++k)
-        parent[find(parent, edge_tri[k].second)] = find(parent, edge_tri[first].second);
+        components.unite(edge_tri[k].second, edge_tri[first].second);
     } else {
       const std::size_t a = std::size_t(edge_tri[first].first >> 32),
                         b = std::size_t(edge_tri[first].first & 0xffffffffu);
       ++border_degree[a];
       ++border_degree[b];
-      border_parent[find(border_parent, a)] = find(border_parent, b);
+      loops.unite(a, b);
     }
     first = last;
   }
   t.euler = long(vertices) - long(edges) + long(t.faces);
   for(std::size_t i = 0; i < tris.size(); ++i)
-    if(tris[i].label == label && find(parent, i) == i) ++t.components;
+    if(tris[i].label == label && components.find(i) == i) ++t.components;
   for(std::size_t x = 0; x < number_of_nodes; ++x)
     if(border_degree[x] > 0) {
-      if(find(border_parent, x) == x) ++t.border_loops;
+      if(loops.find(x) == x) ++t.border_loops;
       if(border_degree[x] > 2) ++t.pinches;
     }
   return t;
