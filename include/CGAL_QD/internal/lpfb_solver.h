@@ -384,14 +384,7 @@ private:
         N_(2 * q + 1, i) = -scos[q];
       }
     }
-    NP_ = N_;
-    std::vector<double> mean(G_);
-    for(int row = 0; row < 2 * K_; ++row) {
-      std::fill(mean.begin(), mean.end(), 0.);
-      for(std::size_t i = 0; i < n_; ++i) mean[pb_.corner_group[i]] += N_(row, i);
-      for(std::size_t g = 0; g < G_; ++g) mean[g] /= group_size_[g];
-      for(std::size_t i = 0; i < n_; ++i) NP_(row, i) -= mean[pb_.corner_group[i]];
-    }
+    for(int row = 0; row < 2 * K_; ++row) NP_.row(row) = remove_group_means(N_.row(row).transpose()).transpose();
   }
 
   // The least-squares solution of minimum norm of S x = b, with the pivots
@@ -407,20 +400,26 @@ private:
     return cod.solve(b);
   }
 
+  // P v: v with the mean of every group removed, its projection onto the
+  // null space of the group rows
+  Eigen::VectorXd remove_group_means(const Eigen::Ref<const Eigen::VectorXd>& v) const
+  {
+    std::vector<double> mean(G_, 0.);
+    for(std::size_t i = 0; i < n_; ++i) mean[pb_.corner_group[i]] += v[i];
+    for(std::size_t g = 0; g < G_; ++g) mean[g] /= group_size_[g];
+    Eigen::VectorXd p(n_);
+    for(std::size_t i = 0; i < n_; ++i) p[i] = v[i] - mean[pb_.corner_group[i]];
+    return p;
+  }
+
   // delta = r - L^+ (L r + c) with L = [group rows; N]
   bool step(const std::vector<double>& r, const std::vector<double>& c_lin,
             const Eigen::VectorXd& c_N, std::vector<double>& delta)
   {
     // minimum-norm solution of the group rows, and the projection of r
-    std::vector<double> rmean(G_, 0.);
-    for(std::size_t i = 0; i < n_; ++i) rmean[pb_.corner_group[i]] += r[i];
-    for(std::size_t g = 0; g < G_; ++g) rmean[g] /= group_size_[g];
-    Eigen::VectorXd dp(n_), Pr(n_);
-    for(std::size_t i = 0; i < n_; ++i) {
-      const int g = pb_.corner_group[i];
-      dp[i] = -c_lin[g] / group_size_[g];
-      Pr[i] = r[i] - rmean[g];
-    }
+    const Eigen::VectorXd Pr = remove_group_means(Eigen::Map<const Eigen::VectorXd>(r.data(), Eigen::Index(n_)));
+    Eigen::VectorXd dp(n_);
+    for(std::size_t i = 0; i < n_; ++i) dp[i] = -c_lin[pb_.corner_group[i]] / group_size_[pb_.corner_group[i]];
     const Eigen::VectorXd rhs = NP_ * Pr + c_N + N_ * dp;
     const Eigen::MatrixXd S = NP_ * NP_.transpose();
     const Eigen::VectorXd lambda = minimum_norm_solve(S, rhs);
@@ -441,14 +440,9 @@ private:
   bool newton_step(const std::vector<double>& theta, const std::vector<double>& c_lin,
                    const Eigen::VectorXd& c_N, std::vector<double>& delta)
   {
-    Eigen::VectorXd g(n_), Pg(n_);
-    std::vector<double> gmean(G_, 0.);
-    for(std::size_t i = 0; i < n_; ++i) {
-      g[i] = theta[i] - pb_.target_angle[i];
-      gmean[pb_.corner_group[i]] += g[i];
-    }
-    for(std::size_t g_ = 0; g_ < G_; ++g_) gmean[g_] /= group_size_[g_];
-    for(std::size_t i = 0; i < n_; ++i) Pg[i] = g[i] - gmean[pb_.corner_group[i]];
+    Eigen::VectorXd g(n_);
+    for(std::size_t i = 0; i < n_; ++i) g[i] = theta[i] - pb_.target_angle[i];
+    const Eigen::VectorXd Pg = remove_group_means(g);
     const Eigen::VectorXd nu = -minimum_norm_solve(NP_ * NP_.transpose(), NP_ * Pg);
     if(!nu.allFinite()) return false;
     std::vector<double> hessian_diagonal(n_, 0.);
