@@ -61,15 +61,13 @@ struct Segmentation_result : Chart_flattening_result<TriangleMesh>
 namespace internal {
 
 // the results of a segmentation of the mesh scaled by `scale` (a power of
-// two), in the units of the mesh
+// two), in the units of the mesh (but `points`, which the caller sets)
 template <class TriangleMesh>
 void scale_back(Segmentation_result<TriangleMesh>& r, double scale)
 {
   const double length = 1. / scale, area = length * length;
   for(auto& uv : r.corner_uv)
     for(double& x : uv) x *= length;
-  for(auto& p : r.points)
-    for(double& x : p) x *= length;
   for(Chart_report& c : r.charts) c.area *= area;
   r.seam_length *= length;
   r.merging.seam_length *= length;
@@ -237,7 +235,11 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
 
   if(scale != 1.) {
     internal::scale_back(result, scale);
-    if(!denoise) result.points = internal::points_by_index(tm, input_vpm, vim);  // exactly the input
+    if(denoise)
+      for(auto& p : result.points)
+        for(double& x : p) x /= scale;
+    else
+      result.points = internal::points_by_index(tm, input_vpm, vim);  // exactly the input
     if(!internal::all_finite(result.corner_uv)) {
       // a flattening larger than its surface overflowed on the way back
       Segmentation_result<TriangleMesh> refused;

@@ -105,8 +105,10 @@ Error_code validate_mesh_to_segment(const TriangleMesh& tm, const VPM& vpm)
   if(faces(tm).empty()) return Error_code::EMPTY_MESH;
   for(typename GT::face_descriptor f : faces(tm))
     if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3) return Error_code::NOT_TRIANGLE_MESH;
-  if(has_non_finite_point<TriangleMesh>(vertices(tm), vpm)) return Error_code::INVALID_COORDINATES;
-  if(!coordinates_in_range(largest_coordinate(vertices(tm), vpm))) return Error_code::COORDINATES_OUT_OF_RANGE;
+  // one pass: the largest |coordinate| is NaN where one is not finite
+  const double largest = largest_coordinate(vertices(tm), vpm);
+  if(std::isnan(largest)) return Error_code::INVALID_COORDINATES;
+  if(!coordinates_in_range(largest)) return Error_code::COORDINATES_OUT_OF_RANGE;
   if(has_degenerate_face(tm, faces(tm), vpm)) return Error_code::DEGENERATE_FACE;
   return Error_code::OK;
 }
@@ -163,8 +165,10 @@ Error_code collect_and_validate_patch(const TriangleMesh& tm,
         return Error_code::NOT_TRIANGLE_MESH;
   }
 
-  if(has_non_finite_point<TriangleMesh>(patch.vertices, vpm)) return Error_code::INVALID_COORDINATES;
-  if(!coordinates_in_range(largest_coordinate(patch.vertices, vpm))) return Error_code::COORDINATES_OUT_OF_RANGE;
+  // one pass: the largest |coordinate| is NaN where one is not finite
+  const double largest = largest_coordinate(patch.vertices, vpm);
+  if(std::isnan(largest)) return Error_code::INVALID_COORDINATES;
+  if(!coordinates_in_range(largest)) return Error_code::COORDINATES_OUT_OF_RANGE;
   {
     // A vertex is manifold iff the circulation around halfedge(v) reaches every
     // halfedge that ends at v and meets at most one border halfedge: a pinched
