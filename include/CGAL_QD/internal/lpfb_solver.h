@@ -144,10 +144,9 @@ public:
     // the closure rows of two corner orders are different functions. For a few
     // orders (7 of the 5,845 rotations of 43 merging trials and patches
     // collected from the sweep) every run above wanders among windings of the
-    // border, within the iteration limit; started
-    // from the corner halfway round (then a quarter, three quarters round),
-    // the same problem converges. The angles are mapped back and laid out
-    // from corner 0 as usual.
+    // border until the iteration limit; started from the corner halfway round
+    // (then a quarter, three quarters round), the same problem converges. The
+    // angles are mapped back and laid out from corner 0 as usual.
     const std::size_t starts[] = {n_ / 2, n_ / 4, (3 * n_) / 4};
     for(std::size_t first : starts) {
       if(sol.status != Lpfb_status::NOT_CONVERGED || !opt.line_search || !opt.restart_from_other_corners) break;
@@ -162,9 +161,10 @@ public:
       std::vector<double> c_lin(G_);
       Eigen::VectorXd c_N(2 * K_);
       evaluate(theta, c_lin, c_N);
-      if(!(violation_inf(c_lin, c_N) <= opt.constraint_tolerance)) continue;
+      const double residual = violation_inf(c_lin, c_N);
+      if(!(residual <= opt.constraint_tolerance)) continue;
       sol.status = Lpfb_status::CONVERGED;
-      sol.constraint_residual = violation_inf(c_lin, c_N);
+      sol.constraint_residual = residual;
       sol.objective = objective(theta);
       sol.theta = theta;
       layout(theta, sol.position);
