@@ -1,0 +1,219 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_INTERNAL_ARAP_OPTIMIZER_H
+#define CGAL_QD_INTERNAL_ARAP_OPTIMIZER_H
+
+// The local/global as-rigid-as-possible iteration of `optimize_flattening()`
+// on a patch given by index arrays: the fixed part (per-face isometric edge
+// vectors and cotangents, the factorised global matrix) and the two steps.
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+template <class Solver>
+class Arap_optimizer
+{
+public:
+  typedef std::array<double, 2> Vector_2;
+
+  // `tri`: 3 vertex indices per face in [0, nv); `p`: 3D points by vertex;
+  // `border_edges`: pairs (i, j) of border edges, with the surface on the left
+  // of i -> j, pulled to `border_length` with weight `border_weight` (with
+  // KEEP_LENGTHS; 0 otherwise).
+  Arap_optimizer(std::size_t nv, const std::vector<std::array<std::size_t, 3>>& tri,
+                 const std::vector<std::array<double, 3>>& p, const std::vector<std::array<std::size_t, 2>>& border_edges,
+                 const std::vector<double>& border_length, double border_weight, const Solver& solver)
+      : m_nv(nv), m_tri(tri), m_border(border_edges), m_lambda(border_weight), m_length(border_length),
+        m_solver(solver)
+  {
+    const std::size_t nf = tri.size();
+    m_dx.resize(nf);
+    m_cot.resize(nf);
+    m_area = 0;
+    for(std::size_t f = 0; f < nf; ++f) {
+      const std::array<double, 3>&a = p[tri[f][0]], &b = p[tri[f][1]], &c = p[tri[f][2]];
+      const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+      const double d = (e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2]) / l1;
+      const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+                   cz = e1[0] * e2[1] - e1[1] * e2[0];
+      const double h = std::sqrt(cx * cx + cy * cy + cz * cz) / l1;
+      // the face laid flat, isometrically
+      const std::array<Vector_2, 3> x = {{{0., 0.}, {l1, 0.}, {d, h}}};
+      m_area += 0.5 * l1 * h;
+      for(int k = 0; k < 3; ++k) {
+        const Vector_2&o = x[k], &q = x[(k + 1) % 3], &r = x[(k + 2) % 3];
+        const double u[2] = {q[0] - o[0], q[1] - o[1]}, w[2] = {r[0] - o[0], r[1] - o[1]};
+        m_cot[f][k] = (u[0] * w[0] + u[1] * w[1]) / std::abs(u[0] * w[1] - u[1] * w[0]);
+        m_dx[f][k] = {q[0] - r[0], q[1] - r[1]};
+      }
+    }
+  }
+
+  // Factorises the global matrix; `fixed[i]` marks the vertices that keep
+  // their position (the border with FIXED, else one pinned vertex).
+  bool factorize(const std::vector<char>& fixed)
+  {
+    m_row.assign(m_nv, -1);
+    m_unknowns = 0;
+    for(std::size_t i = 0; i < m_nv; ++i)
+      if(!fixed[i]) m_row[i] = static_cast<long>(m_unknowns++);
+    if(m_unknowns == 0) return true;
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(9 * m_tri.size() + 4 * m_border.size());
+    auto add_edge = [&](std::size_t i, std::size_t j, double w) {
+      const long ri = m_row[i], rj = m_row[j];
+      if(ri >= 0) t.emplace_back(ri, ri, w);
+      if(rj >= 0) t.emplace_back(rj, rj, w);
+      if(ri >= 0 && rj >= 0) t.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), -w);
+    };
+    for(std::size_t f = 0; f < m_tri.size(); ++f)
+      for(int k = 0; k < 3; ++k) add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k]);
+    if(m_lambda > 0)
+      for(const auto& e : m_border) add_edge(e[0], e[1], m_lambda);
+    m_matrix.resize(static_cast<Eigen::Index>(m_unknowns), static_cast<Eigen::Index>(m_unknowns));
+    m_matrix.setFromTriplets(t.begin(), t.end());
+    return m_solver.factorize(m_matrix);
+  }
+
+  // The best rotation of every face for `u`, and the energy of `u` with them.
+  // Each edge difference of `u` is formed once, for the rotation and the energy.
+  double local_step(const std::vector<Vector_2>& u)
+  {
+    m_rot.resize(m_tri.size());
+    double energy = 0;
+    for(std::size_t f = 0; f < m_tri.size(); ++f) {
+      const std::array<std::size_t, 3>& t = m_tri[f];
+      const std::array<Vector_2, 3>& dx = m_dx[f];
+      const std::array<double, 3>& w = m_cot[f];
+      double du[3][2];
+      double a = 0, b = 0, c = 0, d = 0;  // sum cot du dx^T
+      for(int k = 0; k < 3; ++k) {
+        const Vector_2 &ui = u[t[(k + 1) % 3]], &uj = u[t[(k + 2) % 3]];
+        du[k][0] = ui[0] - uj[0];
+        du[k][1] = ui[1] - uj[1];
+        a += w[k] * du[k][0] * dx[k][0];
+        b += w[k] * du[k][0] * dx[k][1];
+        c += w[k] * du[k][1] * dx[k][0];
+        d += w[k] * du[k][1] * dx[k][1];
+      }
+      const double s = c - b, co = a + d, n = std::sqrt(s * s + co * co);
+      const Vector_2 r = n > 0 ? Vector_2{co / n, s / n} : Vector_2{1., 0.};
+      m_rot[f] = r;
+      double e = 0;
+      for(int k = 0; k < 3; ++k) {
+        const double ex = du[k][0] - (r[0] * dx[k][0] - r[1] * dx[k][1]);
+        const double ey = du[k][1] - (r[1] * dx[k][0] + r[0] * dx[k][1]);
+        e += w[k] * (ex * ex + ey * ey);
+      }
+      energy += e;
+    }
+    return (energy + spring_energy(u)) / m_area;
+  }
+
+  // The positions that minimise the energy for the current rotations.
+  bool global_step(const std::vector<Vector_2>& u, std::vector<Vector_2>& out)
+  {
+    out = u;
+    if(m_unknowns == 0) return true;
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m_unknowns), 2);
+    auto add_edge = [&](std::size_t i, std::size_t j, double w, double tx, double ty) {
+      // w |(u_i - u_j) - t|^2
+      const long ri = m_row[i], rj = m_row[j];
+      if(ri >= 0) {
+        B(ri, 0) += w * tx;
+        B(ri, 1) += w * ty;
+        if(rj < 0) {
+          B(ri, 0) += w * u[j][0];
+          B(ri, 1) += w * u[j][1];
+        }
+      }
+      if(rj >= 0) {
+        B(rj, 0) -= w * tx;
+        B(rj, 1) -= w * ty;
+        if(ri < 0) {
+          B(rj, 0) += w * u[i][0];
+          B(rj, 1) += w * u[i][1];
+        }
+      }
+    };
+    for(std::size_t f = 0; f < m_tri.size(); ++f) {
+      const Vector_2& r = m_rot[f];
+      for(int k = 0; k < 3; ++k) {
+        const Vector_2& dx = m_dx[f][k];
+        add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k], r[0] * dx[0] - r[1] * dx[1],
+                 r[1] * dx[0] + r[0] * dx[1]);
+      }
+    }
+    if(m_lambda > 0)
+      for(std::size_t e = 0; e < m_border.size(); ++e) {
+        const std::size_t i = m_border[e][0], j = m_border[e][1];
+        const double dx = u[i][0] - u[j][0], dy = u[i][1] - u[j][1], n = std::sqrt(dx * dx + dy * dy);
+        if(n > 0) add_edge(i, j, m_lambda, m_length[e] * dx / n, m_length[e] * dy / n);
+      }
+    Eigen::MatrixXd X;
+    if(!m_solver.solve(B, X) || !X.allFinite()) return false;
+    for(std::size_t i = 0; i < m_nv; ++i)
+      if(m_row[i] >= 0) out[i] = {X(m_row[i], 0), X(m_row[i], 1)};
+    return true;
+  }
+
+  // whether the face has a positive orientation
+  bool positive(std::size_t f, const std::vector<Vector_2>& u) const
+  {
+    const Vector_2&a = u[m_tri[f][0]], &b = u[m_tri[f][1]], &c = u[m_tri[f][2]];
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) > 0;
+  }
+
+  bool has_flip(const std::vector<Vector_2>& u) const
+  {
+    for(std::size_t f = 0; f < m_tri.size(); ++f)
+      if(!positive(f, u)) return true;
+    return false;
+  }
+
+private:
+  // lambda sum (|u_i - u_j| - l)^2 over the border edges pulled to their lengths
+  double spring_energy(const std::vector<Vector_2>& u) const
+  {
+    double e = 0;
+    if(m_lambda > 0)
+      for(std::size_t k = 0; k < m_border.size(); ++k) {
+        const std::size_t i = m_border[k][0], j = m_border[k][1];
+        const double d = std::hypot(u[i][0] - u[j][0], u[i][1] - u[j][1]) - m_length[k];
+        e += m_lambda * d * d;
+      }
+    return e;
+  }
+
+  std::size_t m_nv;
+  const std::vector<std::array<std::size_t, 3>>& m_tri;
+  const std::vector<std::array<std::size_t, 2>>& m_border;
+  double m_lambda;
+  const std::vector<double>& m_length;  // target length of every border edge
+  Solver m_solver;
+  // per face and corner k: the isometric image of the edge opposite the
+  // corner, from corner k + 1 to corner k + 2, and the cotangent of the corner
+  std::vector<std::array<Vector_2, 3>> m_dx;
+  std::vector<std::array<double, 3>> m_cot;
+  std::vector<Vector_2> m_rot;  // cos, sin of every face's rotation
+  std::vector<long> m_row;
+  std::size_t m_unknowns = 0;
+  double m_area = 0;
+  Eigen::SparseMatrix<double> m_matrix;
+};
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_INTERNAL_ARAP_OPTIMIZER_H
