@@ -31,8 +31,10 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -785,6 +787,77 @@ BOOST_AUTO_TEST_CASE(vsa_chart_count_does_not_depend_on_the_resolution)
   std::vector<Series_row> rows;
   for(int level : {-2, -1, 0, 1}) rows.push_back(segment_at_resolution("elephant", elephant, level, ""));
   expect_counts_within_15_percent(rows);
+}
+
+// On fine meshes step 1 averages the face normals over discs gathered from
+// clusters of faces (internal/smooth_face_normals.h), where a disc holds
+// thousands of faces. The clustered average must stay close to the face by
+// face one, keep the creases of fandisk, and be the one chosen only when the
+// discs hold many faces.
+namespace {
+
+struct Normal_deviation
+{
+  double mean = 0, largest = 0;  // area-weighted mean and largest angle, in degrees
+  std::size_t different = 0;     // faces whose two normals are not the same
+};
+
+// how the smoothed normal of every face, clustered (always with `force`, else
+// where the default rule chooses the clusters), differs from the face by face one
+Normal_deviation clustered_normal_deviation(const Series_mesh& tm, bool force)
+{
+  const auto fim = get(CGAL::face_index, tm);
+  const std::vector<QD::internal::Face_geometry> geo =
+      QD::internal::face_geometry(tm, get(CGAL::vertex_point, tm), fim);
+  std::array<double, 3> lo = geo.front().centroid, hi = lo;
+  for(const auto& g : geo)
+    for(int k = 0; k < 3; ++k) {
+      lo[k] = (std::min)(lo[k], g.centroid[k]);
+      hi[k] = (std::max)(hi[k], g.centroid[k]);
+    }
+  const double radius = QD::internal::vsa_smoothing_radius *
+                        std::sqrt(QD::internal::squared_distance3(lo, hi));
+  const auto exact = QD::internal::smooth_face_normals(tm, fim, geo, radius, QD::internal::vsa_crease_cos,
+                                                       std::numeric_limits<double>::infinity());
+  const auto clustered = force ? QD::internal::smooth_face_normals(tm, fim, geo, radius,
+                                                                   QD::internal::vsa_crease_cos, 0.)
+                               : QD::internal::smooth_face_normals(tm, fim, geo, radius,
+                                                                   QD::internal::vsa_crease_cos);
+  Normal_deviation d;
+  double area = 0;
+  for(std::size_t i = 0; i < geo.size(); ++i) {
+    double dot = 0;
+    for(int k = 0; k < 3; ++k) dot += exact[i].normal[k] * clustered[i].normal[k];
+    const double angle = std::acos((std::min)(1., (std::max)(-1., dot))) * 180 / 3.14159265358979323846;
+    d.mean += geo[i].area * angle;
+    area += geo[i].area;
+    d.largest = (std::max)(d.largest, angle);
+    if(exact[i].normal != clustered[i].normal) ++d.different;
+  }
+  d.mean /= area;
+  return d;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(clustered_normal_smoothing_follows_the_face_by_face_one)
+{
+  // elephant subdivided once (22K faces) and fandisk, clusters forced
+  const Normal_deviation elephant = clustered_normal_deviation(at_resolution(read_demo_mesh("elephant"), 1), true);
+  BOOST_TEST_MESSAGE("elephant subdivided once: mean " << elephant.mean << " deg, largest " << elephant.largest
+                                                       << ", " << elephant.different << " faces differ");
+  BOOST_TEST(elephant.different > 0u);  // the clusters were used
+  BOOST_TEST(elephant.mean < 1.);
+  // fandisk: its creases bound the clusters as they bound the discs
+  const Normal_deviation fandisk = clustered_normal_deviation(read_demo_mesh("fandisk"), true);
+  BOOST_TEST_MESSAGE("fandisk: mean " << fandisk.mean << " deg, largest " << fandisk.largest);
+  BOOST_TEST(fandisk.mean < 0.01);
+  BOOST_TEST(fandisk.largest < 1.);
+  // by default the coarse meshes keep the face by face average (about 25
+  // faces per disc on elephant) ...
+  BOOST_TEST(clustered_normal_deviation(read_demo_mesh("elephant"), false).different == 0u);
+  // ... and a fine one takes the clusters (about 380 faces per disc)
+  BOOST_TEST(clustered_normal_deviation(at_resolution(read_demo_mesh("elephant"), 2), false).different > 0u);
 }
 
 // The full series of doc/segmentation_results.md, too slow for every run:

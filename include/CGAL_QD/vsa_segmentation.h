@@ -13,6 +13,7 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/smooth_face_normals.h>
 #include <CGAL_QD/internal/union_find.h>
 #include <CGAL_QD/internal/validation.h>
 
@@ -110,67 +111,6 @@ void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo,
     error[k] += d.area * (x * x + y * y + z * z);
   }
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
-}
-
-// The normal of every face averaged, weighted by area, over the faces whose
-// centroids lie within `radius` of its centroid and are reached from it
-// through such faces across shared edges (a geodesic disc for a radius small
-// against the curvature). An edge whose dihedral angle turns the normal by
-// more than acos(`sharp_cos`) is not crossed, so creases stay sharp. A face
-// whose neighbours are all farther than `radius` keeps its normal: the
-// smoothing only removes variation at scales below `radius`.
-template <class TriangleMesh, class FIM>
-std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM& fim,
-                                               const std::vector<Face_geometry>& geo, double radius,
-                                               double sharp_cos)
-{
-  typedef boost::graph_traits<TriangleMesh> GT;
-  const std::size_t nf = geo.size(), none = std::size_t(-1);
-  std::vector<Face_geometry> out = geo;
-  if(!(radius > 0)) return out;
-  const double r2 = radius * radius;
-  auto squared_distance = [&](std::size_t i, std::size_t g) {
-    const double x = geo[i].centroid[0] - geo[g].centroid[0], y = geo[i].centroid[1] - geo[g].centroid[1],
-                 z = geo[i].centroid[2] - geo[g].centroid[2];
-    return x * x + y * y + z * z;
-  };
-  std::vector<std::array<std::size_t, 3>> next_to(nf);
-  for(typename GT::face_descriptor f : faces(tm)) {
-    const std::size_t i = get(fim, f);
-    int j = 0;
-    for(typename GT::halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      const typename GT::halfedge_descriptor o = opposite(h, tm);
-      std::size_t g = is_border(o, tm) ? none : std::size_t(get(fim, face(o, tm)));
-      if(g != none) {
-        const double dot = geo[i].normal[0] * geo[g].normal[0] + geo[i].normal[1] * geo[g].normal[1] +
-                           geo[i].normal[2] * geo[g].normal[2];
-        if(dot < sharp_cos) g = none;
-      }
-      next_to[i][j++] = g;
-    }
-  }
-  std::vector<std::size_t> stamp(nf, none), queue;
-  for(std::size_t s = 0; s < nf; ++s) {
-    bool near = false;  // most faces of a coarse mesh have no neighbour within the radius
-    for(int j = 0; j < 3; ++j) near = near || (next_to[s][j] != none && squared_distance(s, next_to[s][j]) <= r2);
-    if(!near) continue;
-    std::array<double, 3> sum = {0., 0., 0.};
-    stamp[s] = s;
-    queue.assign(1, s);
-    for(std::size_t q = 0; q < queue.size(); ++q) {
-      const std::size_t i = queue[q];
-      for(int k = 0; k < 3; ++k) sum[k] += geo[i].area * geo[i].normal[k];
-      for(int j = 0; j < 3; ++j) {
-        const std::size_t g = next_to[i][j];
-        if(g == none || stamp[g] == s || squared_distance(s, g) > r2) continue;
-        stamp[g] = s;
-        queue.push_back(g);
-      }
-    }
-    const double l = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
-    if(l > 0) for(int k = 0; k < 3; ++k) out[s].normal[k] = sum[k] / l;
-  }
-  return out;
 }
 
 // The L2,1 metric of CGAL's `L21_metric_plane_proxy` on given per-face normals
