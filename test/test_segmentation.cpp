@@ -1378,6 +1378,64 @@ BOOST_AUTO_TEST_CASE(flatten_charts_repeats_the_segmentation_s_last_step)
   BOOST_TEST(f.compactness == s.compactness, tt::tolerance(1e-12));
 }
 
+// The seam smoothing flattens every chart again at each try; the charts that
+// a try leaves as they were are looked up in a cache (internal/flattening_cache.h)
+// keyed by the chart cut open, the fit's targets and start, and the thresholds.
+BOOST_AUTO_TEST_CASE(cached_flattenings_are_the_flattenings)
+{
+  const std::size_t n = 24;
+  Surface_mesh tm = make<Surface_mesh>(grid(n, n, bump(0.3)));
+  Face_map<Surface_mesh> chart;
+  for(auto f : faces(tm)) {
+    double x = 0;
+    for(auto v : vertices_around_face(halfedge(f, tm), tm)) x += tm.point(v).x() / 3;
+    chart[f] = static_cast<std::size_t>((std::min)(3., std::floor(4 * x)));
+  }
+  const auto chart_map = boost::make_assoc_property_map(chart);
+  auto same = [](const QD::Chart_flattening_result<Surface_mesh>& a, const QD::Chart_flattening_result<Surface_mesh>& b) {
+    BOOST_REQUIRE(a.charts.size() == b.charts.size());
+    for(std::size_t k = 0; k < a.charts.size(); ++k) {
+      BOOST_TEST(a.charts[k].accepted == b.charts[k].accepted);
+      BOOST_TEST(a.charts[k].local_area_distortion == b.charts[k].local_area_distortion);
+      BOOST_TEST(a.charts[k].lengths_matched == b.charts[k].lengths_matched);
+    }
+    BOOST_TEST(a.corner_uv == b.corner_uv);  // to the last bit
+    BOOST_TEST(a.seam_curves_matched == b.seam_curves_matched);
+  };
+  QD::internal::Flattening_cache<QD::Chart_report> cache;
+  const auto plain = QD::flatten_charts<CGAL::Sequential_tag>(tm, chart_map);
+  BOOST_REQUIRE(plain);
+  BOOST_REQUIRE(plain.number_of_charts == 4u);
+  cache.next_generation();
+  const auto first = QD::internal::flatten_charts_impl<CGAL::Sequential_tag>(tm, chart_map, CGAL::parameters::default_values(), &cache);
+  same(plain, first);
+  BOOST_TEST(cache.hits() == 0u);
+  const std::size_t stored = cache.size();
+  BOOST_TEST(stored >= 4u);  // the free flattenings and the fits
+  // the same mesh again: every flattening is found
+  cache.next_generation();
+  const auto again = QD::internal::flatten_charts_impl<CGAL::Sequential_tag>(tm, chart_map, CGAL::parameters::default_values(), &cache);
+  same(plain, again);
+  BOOST_TEST(cache.hits() == stored);
+  BOOST_TEST(cache.size() == stored);
+  // one vertex of the last chart moved: that chart is flattened again, the
+  // first is found, and the result is the uncached one of the moved mesh
+  for(auto v : vertices(tm)) {
+    const auto& p = tm.point(v);
+    if(std::abs(p.x() - 21. / 24) < 1e-9 && std::abs(p.y() - 0.5) < 1e-9) {
+      tm.point(v) = Surface_mesh::Point(p.x(), p.y(), p.z() + 0.01);
+      break;
+    }
+  }
+  const auto moved_plain = QD::flatten_charts<CGAL::Sequential_tag>(tm, chart_map);
+  cache.next_generation();
+  const auto moved = QD::internal::flatten_charts_impl<CGAL::Sequential_tag>(tm, chart_map, CGAL::parameters::default_values(), &cache);
+  same(moved_plain, moved);
+  BOOST_TEST(moved.corner_uv != plain.corner_uv);
+  BOOST_TEST(cache.hits() > stored);
+  BOOST_TEST(cache.hits() < 2 * stored);
+}
+
 BOOST_AUTO_TEST_CASE(flatten_charts_gives_both_sides_of_a_seam_the_same_length)
 {
   // a curved patch in two charts: the free flattenings give the two sides of

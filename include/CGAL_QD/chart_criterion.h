@@ -17,6 +17,7 @@
 #include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/flattening_cache.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
@@ -32,6 +33,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -139,8 +141,6 @@ public:
                         const std::vector<double>* border_target = nullptr,
                         const std::vector<std::array<double, 2>>* start_uv = nullptr) const
   {
-    Chart_report rep;
-    rep.number_of_faces = faces.size();
     Wedges<TriangleMesh> wedges;
     {
       // the position of every face of the set, in a buffer kept between
@@ -150,15 +150,50 @@ public:
       compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
       for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
     }
+    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv);
+    // the chart cut open, the fit's targets and start, and the thresholds
+    Digest digest;
+    const std::uint64_t flags = (corner_uv ? 1u : 0u) | (border_target ? 2u : 0u) | (start_uv ? 4u : 0u);
+    digest.add(&flags, sizeof(flags));
+    const double t[] = {m_thresholds.max_area_distortion, m_thresholds.max_l2_stretch,
+                        m_thresholds.max_local_area_distortion, m_thresholds.border_length_weight,
+                        m_thresholds.overlap_tolerance};
+    const std::uint64_t modes[] = {std::uint64_t(m_thresholds.criterion), std::uint64_t(m_thresholds.arap_border)};
+    digest.add(t, sizeof(t));
+    digest.add(modes, sizeof(modes));
+    digest.add_vector(wedges.wedge_of_corner);
+    for(std::size_t w = 0; w < wedges.size(); ++w)
+      digest.add(m_points[get(m_vim, wedges.vertex_of_wedge[w])].data(), 3 * sizeof(double));
+    if(border_target) digest.add_vector(*border_target);
+    if(start_uv) digest.add_vector(*start_uv);
+    const auto key = digest.value();
+    Chart_report rep;
+    if(m_cache->find(key, rep, corner_uv)) return rep;
+    rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv);
+    m_cache->store(key, rep, corner_uv);
+    return rep;
+  }
+
+  // flattenings are looked up in `cache` (and stored there) from now on; nullptr: none
+  void set_cache(Flattening_cache<Chart_report>* cache) { m_cache = cache; }
+
+private:
+  // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
+  Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges,
+                       std::vector<std::array<double, 2>>* corner_uv, const std::vector<double>* border_target,
+                       const std::vector<std::array<double, 2>>* start_uv) const
+  {
+    Chart_report rep;
+    rep.number_of_faces = n_faces;
     Mesh sm;
     sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
-               static_cast<typename Mesh::size_type>(3 * faces.size()),
-               static_cast<typename Mesh::size_type>(faces.size()));
+               static_cast<typename Mesh::size_type>(3 * n_faces),
+               static_cast<typename Mesh::size_type>(n_faces));
     for(std::size_t w = 0; w < wedges.size(); ++w) {
       const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
       sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
     }
-    for(std::size_t i = 0; i < faces.size(); ++i) {
+    for(std::size_t i = 0; i < n_faces; ++i) {
       typedef typename Mesh::Vertex_index V;
       const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
                                  V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
@@ -175,8 +210,8 @@ public:
     auto uv = sm.template add_property_map<V, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
     auto write_corner_uv = [&] {
       if(!corner_uv) return;
-      corner_uv->resize(3 * faces.size());
-      for(std::size_t c = 0; c < 3 * faces.size(); ++c) {
+      corner_uv->resize(3 * n_faces);
+      for(std::size_t c = 0; c < 3 * n_faces; ++c) {
         const K::Point_2& p = get(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])));
         (*corner_uv)[c] = {p.x(), p.y()};
       }
@@ -184,11 +219,11 @@ public:
     if(border_target) {
       // the chart's flattening `start_uv` with its border edges given the
       // target lengths: the seams of the pieces match
-      for(std::size_t c = 0; c < 3 * faces.size(); ++c)
+      for(std::size_t c = 0; c < 3 * n_faces; ++c)
         put(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])),
             K::Point_2((*start_uv)[c][0], (*start_uv)[c][1]));
       auto goal = sm.template add_property_map<typename Mesh::Edge_index, double>("e:goal", 0.).first;
-      for(std::size_t i = 0; i < faces.size(); ++i)
+      for(std::size_t i = 0; i < n_faces; ++i)
         for(auto h : CGAL::halfedges_around_face(halfedge(typename Mesh::Face_index(
                                                      static_cast<typename Mesh::size_type>(i)), sm), sm)) {
           int k = 0;
@@ -305,7 +340,6 @@ public:
     return rep;
   }
 
-private:
   // a face-index buffer of the mesh's size, all -1, taken from the
   // evaluator's pool for one trial and given back (all -1 again) after it
   class Scratch_buffer
@@ -380,6 +414,7 @@ private:
   mutable std::atomic<std::size_t> m_not_converged{0};
   mutable std::mutex m_scratch_mutex;
   mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
+  Flattening_cache<Chart_report>* m_cache = nullptr;
 };
 
 template <class TriangleMesh, class NamedParameters>

@@ -102,7 +102,8 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
                           const std::vector<std::size_t>& chart, std::size_t n,
                           const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
                           const Merge_thresholds& thresholds, const std::function<void(const char*, double)>& progress,
-                          Chart_flattening_result<TriangleMesh>& result)
+                          Chart_flattening_result<TriangleMesh>& result,
+                          Flattening_cache<Chart_report>* cache = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -143,6 +144,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   }
 
   Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, thresholds);
+  evaluator.set_cache(cache);
   std::vector<std::vector<face_descriptor>> members(n);
   for(face_descriptor f : faces(tm)) members[chart[get(fim, f)]].push_back(f);
   for(auto& m : members)
@@ -283,6 +285,45 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   if(progress) progress("flatten", 1.);
 }
 
+// `flatten_charts()`, with flattenings looked up in `cache` (nullptr: none)
+template <class ConcurrencyTag, class TriangleMesh, class FaceChartMap, class NamedParameters>
+Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm, const FaceChartMap& face_chart,
+                                                          const NamedParameters& np,
+                                                          Flattening_cache<Chart_report>* cache)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+
+  Chart_flattening_result<TriangleMesh> result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                                    CGAL::Static_boolean_property_map<edge_descriptor, false>());
+  const std::function<void(const char*, double)> progress =
+      choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
+  result.status = validate_mesh_to_segment(tm, vpm);
+  if(result.status != Error_code::OK) return result;
+
+  std::vector<std::size_t> chart, ids;
+  const std::size_t n = read_charts(tm, face_chart, fim, chart, ids);
+  std::vector<edge_descriptor> seams;
+  for(edge_descriptor e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    if(is_border_edge(h, tm)) continue;
+    if(get(ecm, e) || chart[get(fim, face(h, tm))] != chart[get(fim, face(opposite(h, tm), tm))]) seams.push_back(e);
+  }
+  result.points = points_by_index(tm, vpm, vim);
+  flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams,
+                                       merge_thresholds_from<TriangleMesh>(np), progress, result, cache);
+  return result;
+}
+
 } // namespace internal
 
 /// \ingroup PkgCGAL_QDRef
@@ -314,37 +355,7 @@ template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Triangle
 Chart_flattening_result<TriangleMesh> flatten_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,
                                                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
-
-  Chart_flattening_result<TriangleMesh> result;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
-  const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
-                                    CGAL::Static_boolean_property_map<edge_descriptor, false>());
-  const std::function<void(const char*, double)> progress =
-      choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
-  result.status = internal::validate_mesh_to_segment(tm, vpm);
-  if(result.status != Error_code::OK) return result;
-
-  std::vector<std::size_t> chart, ids;
-  const std::size_t n = internal::read_charts(tm, face_chart, fim, chart, ids);
-  std::vector<edge_descriptor> seams;
-  for(edge_descriptor e : edges(tm)) {
-    const halfedge_descriptor h = halfedge(e, tm);
-    if(is_border_edge(h, tm)) continue;
-    if(get(ecm, e) || chart[get(fim, face(h, tm))] != chart[get(fim, face(opposite(h, tm), tm))]) seams.push_back(e);
-  }
-  result.points = internal::points_by_index(tm, vpm, vim);
-  internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams,
-                                                 internal::merge_thresholds_from<TriangleMesh>(np), progress, result);
-  return result;
+  return internal::flatten_charts_impl<ConcurrencyTag>(tm, face_chart, np, nullptr);
 }
 
 } // namespace CGAL_QD

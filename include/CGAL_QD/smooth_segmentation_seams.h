@@ -67,7 +67,8 @@ struct Seam_smoothing_result
 ///
 /// Every border between two charts starts with the full smoothing of
 /// `smooth_chart_boundaries()` (32 rounds). After each try the charts are
-/// flattened again (`flatten_charts()`); the borders around a chart that
+/// flattened again (`flatten_charts()`; a chart that the try left as it was
+/// takes its flattening from the try before); the borders around a chart that
 /// leaves the thresholds, and the borders between two charts whose seam no
 /// longer matches in length where it did (its two sides within 0.5 %), or
 /// whose sides end further apart than the worst seam of the input, are
@@ -175,6 +176,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   std::map<Chart_pair, double> unmatched_before;
   for(const Chart_pair& p : segmentation.unmatched_seams) unmatched_before[p] = segmentation.max_seam_length_mismatch;
 
+  // the charts that a try leaves as they were flatten as they did at the try before
+  internal::Flattening_cache<Chart_report> cache;
   std::shared_ptr<Try> best;                      // the last try with every chart accepted
   Chart_flattening_result<TriangleMesh> best_flattening;
   std::shared_ptr<Try> settled = original;        // the mesh with the borders settled, in the second phase
@@ -321,7 +324,9 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
                     thresholds.max_l2_stretch,
                     parameters::overlap_tolerance(thresholds.overlap_tolerance,
                                                   CGAL::parameters::edge_is_constrained_map(cut))))));
-    Chart_flattening_result<TriangleMesh> f = flatten_charts<ConcurrencyTag>(mesh, chart, fnp);
+    cache.next_generation();
+    Chart_flattening_result<TriangleMesh> f =
+        internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache);
     ++result.tries;
     if(!f || f.number_of_charts != segmentation.number_of_charts) break;
     if(!best) result.rejected_charts = f.rejected_charts;
