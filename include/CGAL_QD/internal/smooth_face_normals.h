@@ -9,6 +9,7 @@
 // thousands of faces.
 
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/constants.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -64,6 +65,32 @@ inline double squared_distance3(const std::array<double, 3>& a, const std::array
   return x * x + y * y + z * z;
 }
 
+// The sum of `weighted(i)` (an area-weighted normal) over the nodes i reached
+// from `start` through `for_each_neighbour(i, visit)` without leaving the ball
+// of squared radius `r2` around `centre`, with `position(i)`; `stamp` marks
+// the nodes reached with `token`, `queue` is scratch.
+template <class ForEachNeighbour, class Position, class Weighted>
+std::array<double, 3> disc_sum(std::size_t start, const std::array<double, 3>& centre, double r2,
+                               const ForEachNeighbour& for_each_neighbour, const Position& position,
+                               const Weighted& weighted, std::size_t token, std::vector<std::size_t>& stamp,
+                               std::vector<std::size_t>& queue)
+{
+  std::array<double, 3> sum = {0., 0., 0.};
+  stamp[start] = token;
+  queue.assign(1, start);
+  for(std::size_t q = 0; q < queue.size(); ++q) {
+    const std::size_t i = queue[q];
+    const std::array<double, 3> w = weighted(i);
+    for(int k = 0; k < 3; ++k) sum[k] += w[k];
+    for_each_neighbour(i, [&](std::size_t g) {
+      if(stamp[g] == token || squared_distance3(centre, position(g)) > r2) return;
+      stamp[g] = token;
+      queue.push_back(g);
+    });
+  }
+  return sum;
+}
+
 // The normal of every face averaged, weighted by area, over the faces whose
 // centroids lie within `radius` of its centroid and are reached from it
 // through such faces across shared edges (a geodesic disc for a radius small
@@ -97,29 +124,29 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
   };
   double area = 0;
   for(const Face_geometry& g : geo) area += g.area;
-  const double pi = 3.14159265358979323846;
   const bool clustered = area > 0 && double(nf) * pi * r2 / area > cluster_above;
 
   std::vector<std::size_t> stamp(nf, none), queue;
   if(!clustered) {
     for(std::size_t s = 0; s < nf; ++s) {
       bool near = false;  // most faces of a coarse mesh have no neighbour within the radius
-      for(int j = 0; j < 3; ++j)
-        near = near || (next_to[s][j] != none && squared_distance3(geo[s].centroid, geo[next_to[s][j]].centroid) <= r2);
-      if(!near) continue;
-      std::array<double, 3> sum = {0., 0., 0.};
-      stamp[s] = s;
-      queue.assign(1, s);
-      for(std::size_t q = 0; q < queue.size(); ++q) {
-        const std::size_t i = queue[q];
-        for(int k = 0; k < 3; ++k) sum[k] += geo[i].area * geo[i].normal[k];
-        for(int j = 0; j < 3; ++j) {
-          const std::size_t g = next_to[i][j];
-          if(g == none || stamp[g] == s || squared_distance3(geo[s].centroid, geo[g].centroid) > r2) continue;
-          stamp[g] = s;
-          queue.push_back(g);
-        }
+      for(int j = 0; j < 3; ++j) {
+        const std::size_t g = next_to[s][j];
+        near = near || (g != none && squared_distance3(geo[s].centroid, geo[g].centroid) <= r2);
       }
+      if(!near) continue;
+      const std::array<double, 3> sum = disc_sum(
+          s, geo[s].centroid, r2,
+          [&](std::size_t i, const auto& visit) {
+            for(int j = 0; j < 3; ++j)
+              if(next_to[i][j] != none) visit(next_to[i][j]);
+          },
+          [&](std::size_t g) -> const std::array<double, 3>& { return geo[g].centroid; },
+          [&](std::size_t i) {
+            return std::array<double, 3>{geo[i].area * geo[i].normal[0], geo[i].area * geo[i].normal[1],
+                                         geo[i].area * geo[i].normal[2]};
+          },
+          s, stamp, queue);
       set_normal(s, sum);
     }
     return out;
@@ -178,18 +205,13 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
     bool near = cluster_area[c0] > geo[s].area;  // the face's own cluster has other faces
     for(std::size_t d : adjacent[c0]) near = near || squared_distance3(geo[s].centroid, centroid[d]) <= r2;
     if(!near) continue;
-    std::array<double, 3> sum = {0., 0., 0.};
-    seen[c0] = s;
-    queue.assign(1, c0);
-    for(std::size_t q = 0; q < queue.size(); ++q) {
-      const std::size_t c = queue[q];
-      for(int k = 0; k < 3; ++k) sum[k] += normal_sum[c][k];
-      for(std::size_t d : adjacent[c]) {
-        if(seen[d] == s || squared_distance3(geo[s].centroid, centroid[d]) > r2) continue;
-        seen[d] = s;
-        queue.push_back(d);
-      }
-    }
+    const std::array<double, 3> sum = disc_sum(
+        c0, geo[s].centroid, r2,
+        [&](std::size_t c, const auto& visit) {
+          for(std::size_t d : adjacent[c]) visit(d);
+        },
+        [&](std::size_t c) -> const std::array<double, 3>& { return centroid[c]; },
+        [&](std::size_t c) -> const std::array<double, 3>& { return normal_sum[c]; }, s, seen, queue);
     set_normal(s, sum);
   }
   return out;
