@@ -167,10 +167,24 @@ public:
     if(border_target) digest.add_vector(*border_target);
     if(start_uv) digest.add_vector(*start_uv);
     const auto key = digest.value();
+    // stored by wedge: every corner of a wedge has the wedge's UV
     Chart_report rep;
-    if(m_cache->find(key, rep, corner_uv)) return rep;
+    std::vector<std::array<double, 2>> wedge_uv;
+    if(m_cache->find(key, rep, &wedge_uv)) {
+      if(corner_uv && !wedge_uv.empty()) {
+        corner_uv->resize(wedges.wedge_of_corner.size());
+        for(std::size_t c = 0; c < wedges.wedge_of_corner.size(); ++c)
+          (*corner_uv)[c] = wedge_uv[wedges.wedge_of_corner[c]];
+      }
+      return rep;
+    }
     rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv);
-    m_cache->store(key, rep, corner_uv);
+    if(corner_uv && corner_uv->size() == wedges.wedge_of_corner.size()) {
+      wedge_uv.resize(wedges.size());
+      for(std::size_t c = 0; c < wedges.wedge_of_corner.size(); ++c)
+        wedge_uv[wedges.wedge_of_corner[c]] = (*corner_uv)[c];
+    }
+    m_cache->store(key, rep, &wedge_uv);
     return rep;
   }
 

@@ -130,24 +130,22 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   const std::array<std::size_t, 3> strengths = {{32, 8, 2}};  // smoothing rounds; level 3: along the edges
   const std::size_t along_edges = strengths.size();
 
-  // the input, with its cuts inside charts
+  // the cuts inside charts of the input
   std::set<edge_descriptor> seams(segmentation.seam_edges.begin(), segmentation.seam_edges.end());
-  auto original = std::make_shared<Try>();
-  original->copy(tm, face_chart, [&](edge_descriptor e) {
+  auto input_chart = [&](halfedge_descriptor h) { return static_cast<std::size_t>(get(face_chart, face(h, tm))); };
+  auto is_input_cut = [&](edge_descriptor e) {
     const halfedge_descriptor h = halfedge(e, tm);
-    return seams.count(e) > 0 && !is_border_edge(h, tm) &&
-           get(face_chart, face(h, tm)) == get(face_chart, face(opposite(h, tm), tm));
-  });
+    return seams.count(e) > 0 && !is_border_edge(h, tm) && input_chart(h) == input_chart(opposite(h, tm));
+  };
 
   // the smoothing level of every border, and of the cuts of every chart
   std::map<Chart_pair, std::size_t> level;
   std::vector<std::vector<Chart_pair>> pairs_of(segmentation.number_of_charts);
-  for(edge_descriptor e : edges(original->mesh)) {
-    const halfedge_descriptor h = halfedge(e, original->mesh);
-    if(is_border_edge(h, original->mesh)) continue;
-    const std::size_t a = get(original->chart, face(h, original->mesh)),
-                      b = get(original->chart, face(opposite(h, original->mesh), original->mesh));
-    if(a == b && !get(original->cut, e)) continue;
+  for(edge_descriptor e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    if(is_border_edge(h, tm)) continue;
+    const std::size_t a = input_chart(h), b = input_chart(opposite(h, tm));
+    if(a == b && !is_input_cut(e)) continue;
     if(a >= pairs_of.size() || b >= pairs_of.size()) {  // charts not numbered as in `segmentation`
       result.status = Error_code::INVALID_ARGUMENT;
       return result;
@@ -180,7 +178,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   internal::Flattening_cache<Chart_report> cache;
   std::shared_ptr<Try> best;                      // the last try with every chart accepted
   Chart_flattening_result<TriangleMesh> best_flattening;
-  std::shared_ptr<Try> settled = original;        // the mesh with the borders settled, in the second phase
+  // the mesh with the borders settled, in the second phase; null: the input
+  std::shared_ptr<Try> settled;
   Boundary_smoothing_result settled_result;
   bool cut_phase = false;
   std::size_t border_curves = 0, cut_curves = 0;
@@ -210,7 +209,10 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       phase_round = 0;
     }
     auto trial = std::make_shared<Try>();
-    trial->copy(settled->mesh, settled->chart, [&](edge_descriptor e) { return get(settled->cut, e); });
+    if(settled)
+      trial->copy(settled->mesh, settled->chart, [&](edge_descriptor e) { return get(settled->cut, e); });
+    else
+      trial->copy(tm, face_chart, is_input_cut);
     TriangleMesh& mesh = trial->mesh;
     auto& chart = trial->chart;
     auto& cut = trial->cut;
