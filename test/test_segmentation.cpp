@@ -686,7 +686,11 @@ BOOST_AUTO_TEST_CASE(real_meshes_segment_within_the_thresholds)
 {
   // the defaults (free-boundary ARAP trials, A_loc <= 2.5 %): fewer pieces than
   // the paper's criterion, which went from 16 VSA charts to 5 on fandisk
-  for(const auto& mesh : std::vector<std::pair<std::string, std::size_t>>{{"fandisk.off", 4}, {"cow.off", 24}}) {
+  // The two sides of at least 90 % of the seam curves match within 0.5 %
+  // (elephant: 40 of 94 curves when each chart was fitted at once to the mean
+  // of the two sides, 87 with the rounds that first pull the borders towards it).
+  for(const auto& mesh : std::vector<std::pair<std::string, std::size_t>>{
+          {"fandisk.off", 4}, {"cow.off", 24}, {"elephant.off", 20}}) {
     Surface_mesh tm;
     BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/" + mesh.first, tm));
     Chart_map<Surface_mesh> chart;
@@ -696,9 +700,11 @@ BOOST_AUTO_TEST_CASE(real_meshes_segment_within_the_thresholds)
                                   << " -> " << r.number_of_charts << ", max A " << r.max_area_distortion
                                   << " %, max L2 " << r.max_l2_stretch << ", max A_loc " << r.max_local_area_distortion
                                   << " %, seams differ by " << 100 * r.max_seam_length_mismatch << " %, zigzag "
-                                  << r.seam_zigzag << ", compactness " << r.compactness << ", " << r.time_total_ms
-                                  << " ms");
+                                  << r.seam_zigzag << ", compactness " << r.compactness << ", "
+                                  << r.seam_curves_matched << " of " << r.number_of_seam_curves
+                                  << " seam curves matched, " << r.time_total_ms << " ms");
     BOOST_TEST(r.number_of_charts <= mesh.second);
+    BOOST_TEST(10 * r.seam_curves_matched >= 9 * r.number_of_seam_curves);
     BOOST_TEST(r.number_of_charts < r.charts_before_merging);
     expect_valid_segmentation(tm, chart, r);
   }

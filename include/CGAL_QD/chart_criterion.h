@@ -54,9 +54,11 @@ enum class Chart_criterion
   /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
   /// the final flattening, continued up to 300 and started again from LSCM for at most 300 where that is
   /// still not accepted). The final flattening of every chart then gives the two sides of every seam
-  /// curve a common length (the mean of their lengths in the free maps) and gives every border edge its
-  /// share of it exactly (`Arap_border::LENGTH_PRESERVED`) where the chart stays within the thresholds,
-  /// or else pulls the border towards those lengths (`Arap_border::KEEP_LENGTHS`). The splitting and the
+  /// curve a common length (the mean of their lengths) and gives every border edge its share of it
+  /// exactly (`Arap_border::LENGTH_PRESERVED`) where the chart stays within the thresholds, or else
+  /// pulls the border towards those lengths (`Arap_border::KEEP_LENGTHS`); where the sides of curves
+  /// still differ, up to 6 rounds pull the borders of their charts towards the mean with a weight of
+  /// 30, each chart as far as its rigidity allows, and those charts are fitted again. The splitting and the
   /// merging of `segment_quasi_developable()` accept a chart only 5 % below `max_local_area_distortion`,
   /// which leaves room for this fit and for the seam smoothing; the final charts are measured against the
   /// bound itself.
@@ -134,12 +136,17 @@ public:
   // given, holds per corner the target 2D length of the edge that ends at it
   // (used for the border edges of the chart cut open), and `start_uv` the
   // chart's flattening by corner, fitted to those lengths instead of
-  // flattening the chart again.
+  // flattening the chart again: every border edge at exactly its target
+  // length where the thresholds allow it (`exact`), or else pulled towards
+  // it with `pull_weight` (`Arap_border::KEEP_LENGTHS`; with a small weight,
+  // a step towards the targets that the chart takes as far as its rigidity
+  // lets it).
   template <class IsCut>
   Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
                         std::vector<std::array<double, 2>>* corner_uv = nullptr,
                         const std::vector<double>* border_target = nullptr,
-                        const std::vector<std::array<double, 2>>* start_uv = nullptr) const
+                        const std::vector<std::array<double, 2>>* start_uv = nullptr, double pull_weight = 1000.,
+                        bool exact = true) const
   {
     Wedges<TriangleMesh> wedges;
     {
@@ -150,11 +157,13 @@ public:
       compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
       for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
     }
-    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv);
+    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact);
     // the chart cut open, the fit's targets and start, and the thresholds
     Digest digest;
-    const std::uint64_t flags = (corner_uv ? 1u : 0u) | (border_target ? 2u : 0u) | (start_uv ? 4u : 0u);
+    const std::uint64_t flags =
+        (corner_uv ? 1u : 0u) | (border_target ? 2u : 0u) | (start_uv ? 4u : 0u) | (exact ? 8u : 0u);
     digest.add(&flags, sizeof(flags));
+    digest.add(&pull_weight, sizeof(pull_weight));
     const double t[] = {m_thresholds.max_area_distortion, m_thresholds.max_l2_stretch,
                         m_thresholds.max_local_area_distortion, m_thresholds.border_length_weight,
                         m_thresholds.overlap_tolerance};
@@ -178,7 +187,7 @@ public:
       }
       return rep;
     }
-    rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv);
+    rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact);
     if(corner_uv && corner_uv->size() == wedges.wedge_of_corner.size()) {
       wedge_uv.resize(wedges.size());
       for(std::size_t c = 0; c < wedges.wedge_of_corner.size(); ++c)
@@ -195,7 +204,7 @@ private:
   // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
   Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges,
                        std::vector<std::array<double, 2>>* corner_uv, const std::vector<double>* border_target,
-                       const std::vector<std::array<double, 2>>* start_uv) const
+                       const std::vector<std::array<double, 2>>* start_uv, double pull_weight, bool exact) const
   {
     Chart_report rep;
     rep.number_of_faces = n_faces;
@@ -250,6 +259,21 @@ private:
           while(g != h && h < g) g = next(g, sm);
           if(g == h) ++rep.number_of_border_loops;
         }
+      // the border pulled towards the targets with `weight`
+      auto pull = [&](double weight) {
+        const Optimization_result o = optimize_flattening(
+            sm, uv,
+            parameters::arap_border(Arap_border::KEEP_LENGTHS,
+                                    parameters::border_edge_length_map(goal, parameters::border_length_weight(weight))));
+        if(o && measure(sm, uv, rep)) {
+          rep.optimized = true;
+          write_corner_uv();
+        } else {
+          rep.accepted = false;  // the caller keeps its earlier flattening
+        }
+        return rep;
+      };
+      if(!exact) return pull(pull_weight);
       // first every border edge at exactly its target length (the border
       // angles of the flattening kept as closely as the closure allows, the
       // interior fitted again); where that leaves the thresholds, the border
@@ -266,17 +290,7 @@ private:
         write_corner_uv();
         return exact_rep;
       }
-      const Optimization_result o = optimize_flattening(
-          sm, uv,
-          parameters::arap_border(Arap_border::KEEP_LENGTHS,
-                                  parameters::border_edge_length_map(goal, parameters::border_length_weight(1000.))));
-      if(o && measure(sm, uv, rep)) {
-        rep.optimized = true;
-        write_corner_uv();
-      } else {
-        rep.accepted = false;  // the caller keeps its earlier flattening
-      }
-      return rep;
+      return pull(pull_weight);
     }
     const Flattening_result flat = flatten_patch(sm, uv);
     rep.number_of_border_loops = flat.border.number_of_loops;

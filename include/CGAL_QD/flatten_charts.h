@@ -94,6 +94,15 @@ struct Chart_flattening_result
 
 namespace internal {
 
+// a seam curve matches when its two sides differ by at most this fraction of the longer
+inline constexpr double matched_seam_tolerance = 0.005;
+// the rounds of the final flattening that pull every chart's border towards
+// the mean lengths of its seams, and the weight of the pull
+// (`border_length_weight`): measured on CGAL's meshes, 4 to 6 rounds match as
+// many curves as more, and a weight of 30 more than 3, 10 or 100
+inline constexpr std::size_t seam_pull_rounds = 6;
+inline constexpr double seam_pull_weight = 30.;
+
 // Flattens the charts `chart` (compact ids by face index, n charts) cut open
 // along `seams`, and fills the chart and seam fields of `result` (whose
 // `points` hold the points by vertex index).
@@ -174,14 +183,26 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
   };
   if(thresholds.criterion != Chart_criterion::LPFB_IP) {
-    // the two sides of every seam edge get a common length: the mean of their
-    // lengths, or the length in a chart whose flattening cannot be fitted
-    // (kept as it is); a chart is fitted again when a neighbour is kept
+    // the two sides of every seam edge get a common length: every chart is
+    // fitted exactly to the mean of the two sides of its curves (every border
+    // edge at its share), or, where that leaves the thresholds, keeps its
+    // lengths and its neighbours are fitted to them. The free flattenings can
+    // give the two sides of a curve lengths several per cent apart, more than
+    // a chart near the local area bound can take at once: where curves still
+    // differ, a few rounds (`seam_pull_rounds`) pull the border of every chart
+    // along such a curve towards the mean of the two sides of each of its
+    // curves, each chart as far as its rigidity lets it, so that the stiffer
+    // side moves less (a pull that leaves the thresholds is not taken), and
+    // the charts are fitted exactly again from there.
     std::vector<char> kept(n, 0), todo(n, 1);
-    const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
     std::vector<double> factor(num_halfedges(tm), 1.);
-    for(int round = 0; round < 3; ++round) {
-      // each side of a curve is scaled along itself to the common length
+    // each side of a curve scaled along itself to the common length: the
+    // factor of every seam halfedge; whether a curve's sides differ by more
+    // than the 0.5 % of a matched seam, and the charts along such a curve
+    std::vector<char> on_unmatched(n, 0);
+    auto common_lengths = [&]() {
+      bool unmatched = false;
+      std::fill(on_unmatched.begin(), on_unmatched.end(), 0);
       for(const std::vector<halfedge_descriptor>& curve : curves) {
         double side[2] = {0., 0.};
         for(halfedge_descriptor h : curve) {
@@ -191,13 +212,26 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
         const std::size_t a = chart[get(fim, face(curve.front(), tm))],
                           b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
         const double common = kept[a] ? side[0] : kept[b] ? side[1] : (side[0] + side[1]) / 2;
+        if(std::abs(side[0] - side[1]) > matched_seam_tolerance * (std::max)(side[0], side[1])) {
+          unmatched = true;
+          on_unmatched[a] = on_unmatched[b] = 1;
+        }
         for(halfedge_descriptor h : curve) {
           factor[get(him, h)] = side[0] > 0 ? common / side[0] : 1.;
           factor[get(him, opposite(h, tm))] = side[1] > 0 ? common / side[1] : 1.;
         }
       }
+      return unmatched;
+    };
+    // the accepted charts with `todo` set, fitted to the lengths `factor`
+    // gives their border edges from the flattenings `start` (see
+    // `Chart_evaluator::evaluate()`)
+    std::vector<std::size_t> list;
+    std::vector<Chart_report> fitted;
+    std::vector<std::vector<std::array<double, 2>>> fitted_uv;
+    auto fit = [&](const std::vector<std::vector<std::array<double, 2>>>& start, double pull_weight, bool exact) {
       std::vector<std::vector<double>> target(n);
-      std::vector<std::size_t> list;
+      list.clear();
       for(std::size_t k = 0; k < n; ++k) {
         if(!todo[k] || kept[k] || !result.charts[k].accepted) continue;
         list.push_back(k);
@@ -208,34 +242,74 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
             target[k][3 * i + j++] = factor[get(him, g)] * uv_length(g);
         }
       }
-      std::vector<Chart_report> fitted(list.size());
-      std::vector<std::vector<std::array<double, 2>>> fitted_uv(list.size());
+      fitted.assign(list.size(), Chart_report());
+      fitted_uv.assign(list.size(), {});
       for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t i) {
         const std::size_t k = list[i];
-        fitted[i] = evaluator.evaluate(members[k], seam, &fitted_uv[i], &target[k], &first_uvs[k]);
+        fitted[i] = evaluator.evaluate(members[k], seam, &fitted_uv[i], &target[k], &start[k], pull_weight, exact);
       });
-      std::fill(todo.begin(), todo.end(), 0);
-      bool again = false;
-      for(std::size_t i = 0; i < list.size(); ++i) {
-        const std::size_t k = list[i];
-        if(fitted[i].accepted) {
-          result.charts[k] = fitted[i];
-          uvs[k].swap(fitted_uv[i]);
-          continue;
-        }
-        // kept with its own lengths: its neighbours fit to them
-        kept[k] = 1;
-        for(face_descriptor f : members[k])
-          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-            const halfedge_descriptor o = opposite(g, tm);
-            if(!is_border(o, tm) && seam(g)) {
-              const std::size_t other = chart[get(fim, face(o, tm))];
-              if(other != k && !kept[other]) todo[other] = again = true;
-            }
+    };
+    // the charts of `todo` fitted exactly from their flattenings as they are now
+    auto fit_exactly = [&]() {
+      std::fill(kept.begin(), kept.end(), 0);
+      const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
+      for(int round = 0; round < 3; ++round) {
+        common_lengths();
+        fit(first_uvs, 1000., true);
+        std::fill(todo.begin(), todo.end(), 0);
+        bool again = false;
+        for(std::size_t i = 0; i < list.size(); ++i) {
+          const std::size_t k = list[i];
+          if(fitted[i].accepted) {
+            result.charts[k] = fitted[i];
+            uvs[k].swap(fitted_uv[i]);
+            continue;
           }
+          // kept with its own lengths: its neighbours fit to them
+          kept[k] = 1;
+          for(face_descriptor f : members[k])
+            for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+              const halfedge_descriptor o = opposite(g, tm);
+              if(!is_border(o, tm) && seam(g)) {
+                const std::size_t other = chart[get(fim, face(o, tm))];
+                if(other != k && !kept[other]) todo[other] = again = true;
+              }
+            }
+        }
+        for(std::size_t k : list) store(k);
+        if(!again) break;
       }
-      for(std::size_t k : list) store(k);
-      if(!again) break;
+      std::fill(kept.begin(), kept.end(), 0);
+    };
+    std::fill(todo.begin(), todo.end(), 1);
+    fit_exactly();
+    if(common_lengths()) {
+      // curves whose sides still differ: their charts pulled towards the
+      // mean, then the charts pulled and their neighbours fitted exactly again
+      std::vector<char> pulled(n, 0);
+      for(std::size_t round = 0; round < seam_pull_rounds && common_lengths(); ++round) {
+        todo = on_unmatched;
+        fit(uvs, seam_pull_weight, false);
+        bool moved = false;
+        for(std::size_t i = 0; i < list.size(); ++i)
+          if(fitted[i].accepted) {
+            result.charts[list[i]] = fitted[i];
+            uvs[list[i]].swap(fitted_uv[i]);
+            pulled[list[i]] = 1;
+            moved = true;
+          }
+        for(std::size_t k : list) store(k);
+        if(!moved) break;
+      }
+      todo = pulled;
+      for(std::size_t k = 0; k < n; ++k)
+        if(pulled[k])
+          for(face_descriptor f : members[k])
+            for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+              const halfedge_descriptor o = opposite(g, tm);
+              if(!is_border(o, tm) && seam(g)) todo[chart[get(fim, face(o, tm))]] = 1;
+            }
+      fit_exactly();
     }
   }
   for(std::size_t k = 0; k < n; ++k) {
@@ -257,7 +331,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     const double mismatch = longer > 0 ? std::abs(side[0] - side[1]) / longer : 0.;
     result.max_seam_length_mismatch = (std::max)(result.max_seam_length_mismatch, mismatch);
     ++result.number_of_seam_curves;
-    if(mismatch <= 0.005) {
+    if(mismatch <= matched_seam_tolerance) {
       ++result.seam_curves_matched;
     } else {
       const std::size_t a = chart[get(fim, face(curve.front(), tm))],
