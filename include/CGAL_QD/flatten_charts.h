@@ -249,9 +249,17 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
         fitted[i] = evaluator.evaluate(members[k], seam, &fitted_uv[i], &target[k], &start[k], pull_weight, exact);
       });
     };
-    // the charts of `todo` fitted exactly from their flattenings as they are now
+    // calls f with the chart across every seam edge of chart k
+    auto for_each_neighbour = [&](std::size_t k, auto&& f) {
+      for(face_descriptor face_k : members[k])
+        for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(face_k, tm), tm)) {
+          const halfedge_descriptor o = opposite(g, tm);
+          if(!is_border(o, tm) && seam(g)) f(chart[get(fim, face(o, tm))]);
+        }
+    };
+    // the charts of `todo` fitted exactly from their flattenings as they are
+    // now (`kept` is all 0 before and after)
     auto fit_exactly = [&]() {
-      std::fill(kept.begin(), kept.end(), 0);
       const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
       for(int round = 0; round < 3; ++round) {
         common_lengths();
@@ -267,14 +275,9 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
           }
           // kept with its own lengths: its neighbours fit to them
           kept[k] = 1;
-          for(face_descriptor f : members[k])
-            for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-              const halfedge_descriptor o = opposite(g, tm);
-              if(!is_border(o, tm) && seam(g)) {
-                const std::size_t other = chart[get(fim, face(o, tm))];
-                if(other != k && !kept[other]) todo[other] = again = true;
-              }
-            }
+          for_each_neighbour(k, [&](std::size_t other) {
+            if(other != k && !kept[other]) todo[other] = again = true;
+          });
         }
         for(std::size_t k : list) store(k);
         if(!again) break;
@@ -287,7 +290,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
       // curves whose sides still differ: their charts pulled towards the
       // mean, then the charts pulled and their neighbours fitted exactly again
       std::vector<char> pulled(n, 0);
-      for(std::size_t round = 0; round < seam_pull_rounds && common_lengths(); ++round) {
+      for(std::size_t round = 0; round < seam_pull_rounds; ++round) {
         todo = on_unmatched;
         fit(uvs, seam_pull_weight, false);
         bool moved = false;
@@ -299,16 +302,11 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
             moved = true;
           }
         for(std::size_t k : list) store(k);
-        if(!moved) break;
+        if(!moved || !common_lengths()) break;
       }
       todo = pulled;
       for(std::size_t k = 0; k < n; ++k)
-        if(pulled[k])
-          for(face_descriptor f : members[k])
-            for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-              const halfedge_descriptor o = opposite(g, tm);
-              if(!is_border(o, tm) && seam(g)) todo[chart[get(fim, face(o, tm))]] = 1;
-            }
+        if(pulled[k]) for_each_neighbour(k, [&](std::size_t other) { todo[other] = 1; });
       fit_exactly();
     }
   }
