@@ -216,7 +216,7 @@ int main(int argc, char** argv)
   auto chart = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
   namespace QP = CGAL_QD::parameters;
   // CGAL_QD's parameters take the rest of the pack as a second argument
-  const auto np = QP::arap_border(
+  const auto np = QP::area_preservation(o.area_preservation, QP::arap_border(
       segment_mesh::arap_border(o),
       QP::max_local_area_distortion(
           o.max_local_area_distortion,
@@ -236,7 +236,7 @@ int main(int argc, char** argv)
                                       o.merge,
                                       QP::merge_order(segment_mesh::merge_order(o),
                                                       CGAL::parameters::verbose(o.verbose).callback(
-                                                          std::function<void(const char*, double)>(progress))))))))))));
+                                                          std::function<void(const char*, double)>(progress)))))))))))));
   CGAL_QD::Segmentation_result<Mesh> r =
       o.sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                    : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
@@ -249,10 +249,10 @@ int main(int argc, char** argv)
     smoothing.requested = true;
     smoothing.input_faces = r.number_of_faces;
     auto smoothed_chart = smoothed.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
-    const auto snp = QP::max_local_area_distortion(
+    const auto snp = QP::area_preservation(o.area_preservation, QP::max_local_area_distortion(
         o.max_local_area_distortion,
         QP::chart_criterion(segment_mesh::criterion(o),
-                            QP::max_area_distortion(o.max_area_distortion, QP::max_l2_stretch(o.max_stretch))));
+                            QP::max_area_distortion(o.max_area_distortion, QP::max_l2_stretch(o.max_stretch)))));
     CGAL_QD::Seam_smoothing_result<Mesh>& s = smoothing.result;
     s = o.sequential
             ? CGAL_QD::smooth_segmentation_seams<CGAL::Sequential_tag>(mesh, chart, r, smoothed, smoothed_chart, snp)

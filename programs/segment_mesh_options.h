@@ -40,6 +40,7 @@ struct Options
   double max_area_distortion = 0.10;
   double max_stretch = 2.0;
   double max_local_area_distortion = 0.025;
+  double area_preservation = 0.5;
   std::string criterion = "lpfb-ip-arap";
   std::string arap_border = "free";
   std::string merge_order = "smallest";
@@ -55,6 +56,16 @@ inline std::string check_positive(const std::string& text)
   const double value = std::strtod(text.c_str(), &end);
   if(end == text.c_str() || *end != '\0' || !std::isfinite(value) || !(value > 0))
     return "'" + text + "' is not a positive number";
+  return std::string();
+}
+
+// a finite number in [0, 1]
+inline std::string check_fraction(const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if(end == text.c_str() || *end != '\0' || !(value >= 0 && value <= 1))
+    return "'" + text + "' is not a number from 0 to 1";
   return std::string();
 }
 
@@ -93,6 +104,7 @@ inline void add_options(CLI::App& app, Options& o)
   app.get_formatter()->column_width(44);
   app.option_defaults()->always_capture_default();
   const CLI::Validator positive(check_positive, "POSITIVE");
+  const CLI::Validator fraction(check_fraction, "0..1");
 
   app.add_option("mesh", o.mesh, "The triangle mesh: OFF, OBJ, PLY or STL (repaired on reading)")->required();
   app.add_option("--out-dir", o.out_dir,
@@ -168,6 +180,13 @@ inline void add_options(CLI::App& app, Options& o)
                  "How a chart is flattened and judged: lpfb-ip-arap (LPFB+IP, then free-boundary ARAP, with "
                  "A_loc) or lpfb-ip (the paper's: LPFB+IP with A(Omega) and L2)")
       ->check(CLI::IsMember({"lpfb-ip-arap", "lpfb-ip"}))
+      ->group(segmentation);
+  app.add_option("--area-preservation", o.area_preservation,
+                 "How much of its anisotropy each triangle keeps in the targets of the ARAP flattening: 0 is "
+                 "plain ARAP (rotations), 1 area-preserving targets; more trades a little shear for less area "
+                 "distortion")
+      ->type_name("ALPHA")
+      ->check(fraction)
       ->group(segmentation);
   app.add_option("--arap-border", o.arap_border,
                  "The border of the ARAP flattening of a trial: free, or keep-lengths (pulled to its 3D lengths)")

@@ -18,6 +18,6 @@ if [ $# -ge 1 ]; then
   "$build/programs/segment_mesh" "$mesh" --out-dir "$build/demo" "$@"
 else
   # the pattern at the default size: the model 200 mm at its largest, or less
-  # (fandisk, with tabs: 97 mm) so that every piece fits on an A4 page
+  # (fandisk, with tabs: 96 mm) so that every piece fits on an A4 page
   "$build/programs/segment_mesh" "$build/cgal_data/data/meshes/fandisk.off" --out-dir "$build/demo" --tabs
 fi

@@ -354,6 +354,52 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(arap_lowers_the_stretch_of_a_cap, Mesh, Mesh_types
   BOOST_TEST(QD::compute_distortion(tm, pulled.pmap_const()).flipped_faces == 0u);
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(area_preservation_trades_shear_for_area, Mesh, Mesh_types)
+{
+  // the cap of 70 degrees, free border: the more of its anisotropy every face
+  // keeps in its target, the less area distortion and the more shear (mean
+  // angle distortion; Sander's L2 counts the area change and falls as well);
+  // alpha = 0 is plain ARAP, to the last bit
+  const Mesh tm = make<Mesh>(polar(12, 48, sphere_cap(70 * pi / 180)));
+  const auto f = flatten(tm);
+  auto run = [&](const double* alpha) {
+    Uv_store<Mesh> uv = f.uv;
+    const auto np = QD::parameters::arap_border(QD::Arap_border::FREE).number_of_iterations(300);
+    const QD::Optimization_result o = alpha ? QD::optimize_flattening(tm, uv.pmap(), QD::parameters::area_preservation(*alpha, np))
+                                            : QD::optimize_flattening(tm, uv.pmap(), np);
+    BOOST_REQUIRE_MESSAGE(o, QD::error_message(o.status));
+    return uv;
+  };
+  const double zero = 0, half = 0.5, three_quarters = 0.75, one = 1;
+  const Uv_store<Mesh> arap = run(nullptr);
+  BOOST_TEST((run(&zero).map == arap.map));
+  double last_a_loc = std::numeric_limits<double>::infinity(), last_angle = 0;
+  for(const double* alpha : {&zero, &half, &three_quarters, &one}) {
+    const Uv_store<Mesh> uv = run(alpha);
+    const auto d = QD::compute_distortion(tm, uv.pmap_const());
+    BOOST_TEST_MESSAGE("cap, area preservation " << *alpha << ": A_loc " << d.local_area_distortion << " %, A "
+                                                 << d.area_distortion << " %, L2 " << d.l2_stretch << ", angles "
+                                                 << d.angle_distortion << " rad");
+    BOOST_TEST(d.local_area_distortion < last_a_loc);
+    BOOST_TEST(d.angle_distortion > last_angle);
+    BOOST_TEST(d.flipped_faces == 0u);
+    BOOST_TEST(!d.overlap);
+    last_a_loc = d.local_area_distortion;
+    last_angle = d.angle_distortion;
+  }
+  // area-preserving targets: almost no area distortion left
+  BOOST_TEST(last_a_loc < 0.25 * QD::compute_distortion(tm, arap.pmap_const()).local_area_distortion);
+
+  // outside [0, 1]: INVALID_ARGUMENT, nothing written
+  for(const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    Uv_store<Mesh> uv = f.uv;
+    const auto before = uv.map;
+    BOOST_TEST((QD::optimize_flattening(tm, uv.pmap(), QD::parameters::area_preservation(bad)).status ==
+                QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST((uv.map == before));
+  }
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(arap_rejects_bad_input, Mesh, Mesh_types)
 {
   {

@@ -1622,6 +1622,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(segmentation_seams_are_smoothed_into_a_new_mesh, M
                  .status == QD::Error_code::INVALID_ARGUMENT);
   BOOST_TEST(num_faces(empty_out) == 0u);
   BOOST_TEST(other_chart.empty());
+  // an area preservation outside [0, 1]: refused by every step, nothing written
+  BOOST_TEST(QD::smooth_segmentation_seams(tm, boost::make_assoc_property_map(chart), seg, empty_out,
+                                           boost::make_assoc_property_map(other_chart),
+                                           QD::parameters::area_preservation(1.5))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(num_faces(empty_out) == 0u);
+  BOOST_TEST(QD::flatten_charts(tm, boost::make_assoc_property_map(chart), QD::parameters::area_preservation(-1.))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  Face_map<Mesh> untouched;
+  BOOST_TEST(QD::segment_quasi_developable(tm, boost::make_assoc_property_map(untouched),
+                                           QD::parameters::area_preservation(std::nan("")))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(untouched.empty());
+  Face_map<Mesh> merged = chart;
+  BOOST_TEST(QD::merge_charts_by_boundaries(tm, boost::make_assoc_property_map(merged),
+                                            QD::parameters::area_preservation(2.))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST((merged == chart));
 }
 #endif
 

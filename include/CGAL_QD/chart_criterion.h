@@ -48,7 +48,8 @@ enum class Chart_criterion
   /// the paper's (Section 4.2): the LPFB+IP flattening, accepted when A(Omega) <= `max_area_distortion`,
   /// L2 <= `max_l2_stretch` and there is no overlap
   LPFB_IP,
-  /// LPFB+IP, then the free-boundary ARAP of `optimize_flattening()` started from it; a flattening is
+  /// LPFB+IP, then the free-boundary ARAP of `optimize_flattening()` started from it, with every face's
+  /// target keeping the share `area_preservation` (default 0.5) of its anisotropy; a flattening is
   /// accepted when A(Omega) <= `max_area_distortion`, L2 <= `max_l2_stretch`, A_loc <=
   /// `max_local_area_distortion` and there is no overlap. LPFB+IP is the first screen: the optimisation
   /// runs only when LPFB+IP is not accepted (30 iterations in a trial, until it converges, at most 100, in
@@ -105,6 +106,9 @@ struct Merge_thresholds
   // the border of the optimised flattening of a trial: FREE or KEEP_LENGTHS
   Arap_border arap_border = Arap_border::FREE;
   double border_length_weight = 10.;
+  // the share of anisotropy kept in the targets of the optimisation (see
+  // `CGAL_QD::parameters::area_preservation`)
+  double area_preservation = 0.5;
   // the two sides of a cut inside a developable chart develop onto each other:
   // they touch, which is not an overlap
   double overlap_tolerance = 1e-9;
@@ -166,7 +170,7 @@ public:
     digest.add(&pull_weight, sizeof(pull_weight));
     const double t[] = {m_thresholds.max_area_distortion, m_thresholds.max_l2_stretch,
                         m_thresholds.max_local_area_distortion, m_thresholds.border_length_weight,
-                        m_thresholds.overlap_tolerance};
+                        m_thresholds.overlap_tolerance, m_thresholds.area_preservation};
     const std::uint64_t modes[] = {std::uint64_t(m_thresholds.criterion), std::uint64_t(m_thresholds.arap_border)};
     digest.add(t, sizeof(t));
     digest.add(modes, sizeof(modes));
@@ -263,8 +267,11 @@ private:
       auto pull = [&](double weight) {
         const Optimization_result o = optimize_flattening(
             sm, uv,
-            parameters::arap_border(Arap_border::KEEP_LENGTHS,
-                                    parameters::border_edge_length_map(goal, parameters::border_length_weight(weight))));
+            parameters::arap_border(
+                Arap_border::KEEP_LENGTHS,
+                parameters::border_edge_length_map(
+                    goal, parameters::border_length_weight(
+                              weight, parameters::area_preservation(m_thresholds.area_preservation)))));
         if(o && measure(sm, uv, rep)) {
           rep.optimized = true;
           write_corner_uv();
@@ -282,7 +289,9 @@ private:
       for(auto v : vertices(sm)) put(exact, v, get(uv, v));
       const Optimization_result e = optimize_flattening(
           sm, exact,
-          parameters::arap_border(Arap_border::LENGTH_PRESERVED, parameters::border_edge_length_map(goal)));
+          parameters::arap_border(Arap_border::LENGTH_PRESERVED,
+                                  parameters::border_edge_length_map(
+                                      goal, parameters::area_preservation(m_thresholds.area_preservation))));
       Chart_report exact_rep = rep;
       if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
         exact_rep.optimized = exact_rep.lengths_matched = true;
@@ -315,6 +324,14 @@ private:
     };
     auto last = uv;       // the latest optimisation started from LPFB+IP
     bool capped = false;  // whether it stopped at its iteration cap
+    // a final flattening with area-preserving targets also tries plain ARAP
+    // from LPFB+IP: those targets take a chart that develops onto the plane
+    // towards its isometric unfolding only slowly (the anisotropy of its faces
+    // falls to about the share kept at each iteration)
+    const bool plain_too = !paper && corner_uv && m_thresholds.area_preservation > 0;
+    auto lpfb_ip = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:lpfb", K::Point_2(0, 0)).first;
+    if(plain_too)
+      for(auto v : vertices(sm)) put(lpfb_ip, v, get(uv, v));
     if(!paper && (!rep.accepted || corner_uv)) {
       // free-boundary ARAP started from LPFB+IP
       auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
@@ -334,6 +351,11 @@ private:
         capped = r && r.iterations == 70;
         if(better(more, r)) uv = more;
       }
+    }
+    if(plain_too) {
+      const Optimization_result o =
+          optimize_flattening(sm, lpfb_ip, trial_parameters(0.).number_of_iterations(100));
+      if(better(lpfb_ip, o)) uv = lpfb_ip;
     }
     if(!paper && corner_uv && !rep.accepted) {
       // a final flattening still outside the thresholds: the optimisation
@@ -398,10 +420,16 @@ private:
     std::unique_ptr<std::vector<long>> m_buffer;
   };
 
-  auto trial_parameters() const
+  // the parameters of the optimisation, with the thresholds' area
+  // preservation or the one given
+  auto trial_parameters(double area_preservation = -1.) const
   {
-    return parameters::arap_border(m_thresholds.arap_border,
-                                   parameters::border_length_weight(m_thresholds.border_length_weight));
+    return parameters::arap_border(
+        m_thresholds.arap_border,
+        parameters::border_length_weight(
+            m_thresholds.border_length_weight,
+            parameters::area_preservation(area_preservation < 0 ? m_thresholds.area_preservation
+                                                                : area_preservation)));
   }
 
   // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
@@ -460,7 +488,14 @@ Merge_thresholds merge_thresholds_from(const NamedParameters& np)
   t.arap_border = choose_parameter(get_parameter(np, internal_np::arap_border_t()), t.arap_border);
   t.border_length_weight =
       choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), t.border_length_weight);
+  t.area_preservation = choose_parameter(get_parameter(np, internal_np::area_preservation_t()), t.area_preservation);
   return t;
+}
+
+// whether the parameters that the library does not clamp are in their ranges
+inline bool thresholds_valid(const Merge_thresholds& t)
+{
+  return t.area_preservation >= 0 && t.area_preservation <= 1;
 }
 
 } // namespace internal

@@ -497,8 +497,9 @@ private:
 ///     cut that develop onto each other touch, they do not overlap)
 ///   - `CGAL_QD::parameters::max_local_area_distortion` (default 0.025), `CGAL_QD::parameters::chart_criterion`
 ///     (default `Chart_criterion::LPFB_IP_THEN_ARAP`), and for its ARAP flattening
-///     `CGAL_QD::parameters::arap_border` (default `Arap_border::FREE`) and
-///     `CGAL_QD::parameters::border_length_weight` (see `optimize_flattening()`)
+///     `CGAL_QD::parameters::arap_border` (default `Arap_border::FREE`),
+///     `CGAL_QD::parameters::border_length_weight` and `CGAL_QD::parameters::area_preservation` (default
+///     0.5) (see `optimize_flattening()`)
 ///   - `CGAL_QD::parameters::merge_order`: a `Merge_order` (default `SMALLEST_AREA_FIRST`; the paper's is
 ///     `LARGEST_AREA_FIRST`)
 ///   - `callback`: called with (step name, fraction done) during the run
@@ -506,7 +507,8 @@ private:
 ///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
 /// \returns a `Merging_result` whose `seam_edges` are the edges to cut (the
 ///          borders between charts and the curves left inside charts); on
-///          invalid input (the statuses of `segment_by_error_controlled_vsa()`)
+///          invalid input (the statuses of `segment_by_error_controlled_vsa()`,
+///          `INVALID_ARGUMENT` for an `area_preservation` outside [0, 1])
 ///          nothing is written.
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -526,6 +528,8 @@ Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, 
   const std::function<void(const char*, double)> progress =
       choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
   result.status = internal::validate_mesh_to_segment(tm, vpm);
+  if(result.status == Error_code::OK && !internal::thresholds_valid(internal::merge_thresholds_from<TriangleMesh>(np)))
+    result.status = Error_code::INVALID_ARGUMENT;
   if(result.status != Error_code::OK) return result;
 
   std::vector<std::size_t> chart, ids;

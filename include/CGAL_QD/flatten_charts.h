@@ -380,6 +380,8 @@ Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm
   const std::function<void(const char*, double)> progress =
       choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(const char*, double)>());
   result.status = validate_mesh_to_segment(tm, vpm);
+  if(result.status == Error_code::OK && !thresholds_valid(merge_thresholds_from<TriangleMesh>(np)))
+    result.status = Error_code::INVALID_ARGUMENT;
   if(result.status != Error_code::OK) return result;
 
   std::vector<std::size_t> chart, ids;
@@ -417,11 +419,12 @@ Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm
 ///        result is the k-th smallest id
 /// \param np optional named parameters: the thresholds and criterion of the segmentation
 ///   (`CGAL_QD::parameters::max_area_distortion`, `max_l2_stretch`, `max_local_area_distortion`,
-///   `chart_criterion`, `overlap_tolerance`), `edge_is_constrained_map` (edges inside a chart that
+///   `chart_criterion`, `overlap_tolerance`, `area_preservation`), `edge_is_constrained_map` (edges inside a chart that
 ///   are cut too; default none), `callback`, and `vertex_point_map`, `vertex_index_map`,
 ///   `face_index_map`, `halfedge_index_map`.
 /// \returns a `Chart_flattening_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`
-///          or `DEGENERATE_FACE` on invalid input.
+///          or `DEGENERATE_FACE` on invalid input, `INVALID_ARGUMENT` for an `area_preservation`
+///          outside [0, 1].
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Chart_flattening_result<TriangleMesh> flatten_charts(const TriangleMesh& tm, const FaceChartMap& face_chart,

@@ -60,7 +60,8 @@ struct Optimization_result
   Error_code status = Error_code::OK;
   std::size_t iterations = 0;  ///< local/global iterations done
   /// the ARAP energy sum_T sum_{edges ij of T} cot(alpha_ij) |(u_i - u_j) - R_T (x_i - x_j)|^2 divided by the
-  /// 3D area, before and after (0 for an isometry)
+  /// 3D area, before and after (0 for an isometry); with `CGAL_QD::parameters::area_preservation` > 0, the
+  /// same sum with every face's target map of determinant 1 in place of its rotation R_T
   double energy_before = 0;
   double energy_after = 0;
   /// whether the input map had a flipped triangle (the optimisation may unfold it)
@@ -133,6 +134,7 @@ struct Arap_options
   double border_length_weight = 10.;
   // stop when an iteration lowers the energy by less than this fraction
   double relative_decrease = 1e-4;
+  double area_preservation = 0.;  // see Arap_optimizer
 };
 
 // Optimises `u` (by vertex index) in place; see `optimize_flattening()`.
@@ -147,7 +149,8 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
   const auto start = std::chrono::steady_clock::now();
   Optimization_result result;
   Arap_optimizer<Solver> arap(nv, tri, p, border_edges, border_length,
-                              opt.border == Arap_border::KEEP_LENGTHS ? opt.border_length_weight : 0., solver);
+                              opt.border == Arap_border::KEEP_LENGTHS ? opt.border_length_weight : 0., solver,
+                              opt.area_preservation);
   std::vector<char> fixed(nv, 0);
   if(opt.border == Arap_border::FIXED) {
     for(const auto& e : border_edges) fixed[e[0]] = fixed[e[1]] = 1;
@@ -223,6 +226,11 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///     edge; default: the 3D length
 ///   - `CGAL_QD::parameters::border_length_weight`: with `KEEP_LENGTHS`, the weight of the border
 ///     edge lengths relative to the cotangent weights of the faces (default 10)
+///   - `CGAL_QD::parameters::area_preservation`: a number alpha in [0, 1] (default 0). The local step
+///     gives each face the rotation closest to its map J = U diag(s1, s2) V^T, U V^T, with alpha = 0 (ARAP);
+///     with alpha > 0 the map U diag(t, 1 / t) V^T of determinant 1, t = (s1 / s2)^(alpha / 2) (at most 2),
+///     which keeps a share of the face's anisotropy: the result trades a little shear (L2 stretch) for less
+///     area distortion. With alpha = 1 every target is area-preserving with J's own aspect ratio.
 ///   - `number_of_iterations`: at most this many iterations (default 30); the iteration also stops
 ///     when one lowers the energy by less than 1e-4 of itself
 ///   - `CGAL_QD::parameters::sparse_solver`: as in `flatten_patch()`
@@ -230,8 +238,8 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 /// \returns an `Optimization_result`: `EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
 ///          `INVALID_COORDINATES` (a non-finite point or UV), `COORDINATES_OUT_OF_RANGE` (a
 ///          |coordinate| of a point or UV beyond [2^-64, 2^64]), `DEGENERATE_FACE`,
-///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite)
-///          on invalid input, `SOLVER_FAILED` if the system could not
+///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite),
+///          `INVALID_ARGUMENT` (an `area_preservation` outside [0, 1]) on invalid input, `SOLVER_FAILED` if the system could not
 ///          be solved; in those cases nothing is written.
 /// \sa `flatten_patch()`
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -257,6 +265,12 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
   opt.border = choose_parameter(get_parameter(np, internal_np::arap_border_t()), opt.border);
   opt.border_length_weight =
       choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), opt.border_length_weight);
+  opt.area_preservation =
+      choose_parameter(get_parameter(np, internal_np::area_preservation_t()), opt.area_preservation);
+  if(!(opt.area_preservation >= 0 && opt.area_preservation <= 1)) {
+    result.status = Error_code::INVALID_ARGUMENT;
+    return result;
+  }
 
   if(faces(tm).empty()) {
     result.status = Error_code::EMPTY_MESH;

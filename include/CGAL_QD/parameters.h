@@ -38,6 +38,7 @@ struct chart_criterion_t {};
 struct arap_border_t {};
 struct border_edge_length_map_t {};
 struct border_length_weight_t {};
+struct area_preservation_t {};
 
 } // namespace internal_np
 
@@ -117,6 +118,12 @@ CGAL_QD_ADD_NAMED_PARAMETER(border_edge_length_map)
 /// `Arap_border::KEEP_LENGTHS`, relative to the cotangent weights. Default: 10.
 /// Larger weights give seams whose two sides differ less in length, and more pieces.
 CGAL_QD_ADD_NAMED_PARAMETER(border_length_weight)
+/// how much of its anisotropy every face keeps in the targets of the
+/// local/global iteration of `optimize_flattening()`, a number in [0, 1]: 0 is
+/// ARAP (rotations), 1 area-preserving targets (see `optimize_flattening()`).
+/// Default: 0 in `optimize_flattening()`, 0.5 in the segmentation
+/// (`Chart_criterion::LPFB_IP_THEN_ARAP`).
+CGAL_QD_ADD_NAMED_PARAMETER(area_preservation)
 /// the ratio of the longest to the shortest edge above which `inspect_mesh()`
 /// counts a triangle as a needle. Default: 1000.
 CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)

@@ -113,14 +113,17 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 /// \param np optional named parameters: those of the steps (`CGAL_QD::parameters::vsa_tolerance`,
 ///   `max_number_of_proxies`, `number_of_relaxations`, `CGAL_QD::parameters::refinement_band_width`,
 ///   `CGAL_QD::parameters::denoising_iterations`, `CGAL_QD::parameters::max_area_distortion`,
-///   `CGAL_QD::parameters::max_l2_stretch`, `CGAL_QD::parameters::overlap_tolerance`, `CGAL_QD::parameters::merge_order`), the switches `CGAL_QD::parameters::refine_boundaries`,
+///   `CGAL_QD::parameters::max_l2_stretch`, `CGAL_QD::parameters::overlap_tolerance`, `CGAL_QD::parameters::merge_order`,
+///   `CGAL_QD::parameters::max_local_area_distortion`, `CGAL_QD::parameters::chart_criterion`,
+///   `CGAL_QD::parameters::area_preservation`), the switches `CGAL_QD::parameters::refine_boundaries`,
 ///   `CGAL_QD::parameters::denoise_boundaries`, `CGAL_QD::parameters::merge_charts`,
 ///   `CGAL_QD::parameters::denoised_point_map` (receives the denoised points), `callback` (called with a
 ///   step name, "vsa", "refine", "denoise", "split", "merge" or "flatten", and the fraction done), `verbose`
 ///   (a line per step and per trial on `std::cerr`), and `vertex_point_map`, `vertex_index_map`,
 ///   `face_index_map`, `halfedge_index_map`.
 /// \returns a `Segmentation_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES` or
-///          `DEGENERATE_FACE` on invalid input, in which case nothing is written.
+///          `DEGENERATE_FACE` on invalid input, `INVALID_ARGUMENT` for an `area_preservation` outside
+///          [0, 1], in which case nothing is written.
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& tm, FaceChartMap face_chart,
@@ -157,6 +160,8 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   typedef typename std::remove_const<decltype(vim)>::type VIM;
 
   result.status = internal::validate_mesh_to_segment(tm, vpm);
+  if(result.status == Error_code::OK && !internal::thresholds_valid(internal::merge_thresholds_from<TriangleMesh>(snp)))
+    result.status = Error_code::INVALID_ARGUMENT;
   if(result.status != Error_code::OK) return result;
   const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
   result.number_of_faces = nf;

@@ -97,10 +97,10 @@ struct Seam_smoothing_result
 /// \param out_chart receives the chart of every face of `out`
 /// \param np optional named parameters: the thresholds and criterion of the segmentation
 ///   (`CGAL_QD::parameters::max_area_distortion`, `max_l2_stretch`, `max_local_area_distortion`,
-///   `chart_criterion`, `overlap_tolerance`), as given to it
+///   `chart_criterion`, `overlap_tolerance`, `area_preservation`), as given to it
 /// \returns a `Seam_smoothing_result`; with `kept` false, `out` stays empty and the input's
-///          segmentation stands. `INVALID_ARGUMENT` if `out` is not empty or `segmentation` is not
-///          a successful result for `tm`; the statuses of `smooth_chart_boundaries()` on invalid
+///          segmentation stands. `INVALID_ARGUMENT` if `out` is not empty, `segmentation` is not
+///          a successful result for `tm` or `area_preservation` is outside [0, 1]; the statuses of `smooth_chart_boundaries()` on invalid
 ///          input. On any status but `OK`, `out` stays empty.
 /// \sa `smooth_chart_boundaries()`, `smooth_chart_cuts()`, `seam_zigzag()`
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
@@ -122,10 +122,11 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     result.status = Error_code::INVALID_ARGUMENT;
     return result;
   }
+  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
   result.status = internal::validate_mesh_to_segment(tm, get(CGAL::vertex_point, tm));
+  if(result.status == Error_code::OK && !internal::thresholds_valid(thresholds)) result.status = Error_code::INVALID_ARGUMENT;
   if(result.status != Error_code::OK || segmentation.number_of_charts < 2) return result;
 
-  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
   auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
   const std::array<std::size_t, 3> strengths = {{32, 8, 2}};  // smoothing rounds; level 3: along the edges
   const std::size_t along_edges = strengths.size();
@@ -324,8 +325,10 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
                 thresholds.max_area_distortion,
                 parameters::max_l2_stretch(
                     thresholds.max_l2_stretch,
-                    parameters::overlap_tolerance(thresholds.overlap_tolerance,
-                                                  CGAL::parameters::edge_is_constrained_map(cut))))));
+                    parameters::overlap_tolerance(
+                        thresholds.overlap_tolerance,
+                        parameters::area_preservation(thresholds.area_preservation,
+                                                      CGAL::parameters::edge_is_constrained_map(cut)))))));
     cache.next_generation();
     Chart_flattening_result<TriangleMesh> f =
         internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache);

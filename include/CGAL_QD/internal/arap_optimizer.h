@@ -7,6 +7,14 @@
 // The local/global as-rigid-as-possible iteration of `optimize_flattening()`
 // on a patch given by index arrays: the fixed part (per-face isometric edge
 // vectors and cotangents, the factorised global matrix) and the two steps.
+//
+// The local step gives every face a target linear map. With
+// `area_preservation` alpha = 0 it is the rotation closest to the face's
+// current map J = U diag(s1, s2) V^T, U V^T (ARAP, Liu et al. 2008); with
+// alpha > 0 it is U diag(t, 1 / t) V^T, t = (s1 / s2)^(alpha / 2) (at most
+// 2): a map of determinant 1 that keeps a share of J's anisotropy. With
+// alpha = 1 the target is area-preserving with J's own aspect ratio; in
+// between, the iteration trades a little shear for less area distortion.
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -29,12 +37,13 @@ public:
   // `tri`: 3 vertex indices per face in [0, nv); `p`: 3D points by vertex;
   // `border_edges`: pairs (i, j) of border edges, with the surface on the left
   // of i -> j, pulled to `border_length` with weight `border_weight` (with
-  // KEEP_LENGTHS; 0 otherwise).
+  // KEEP_LENGTHS; 0 otherwise); `area_preservation` in [0, 1]: see above.
   Arap_optimizer(std::size_t nv, const std::vector<std::array<std::size_t, 3>>& tri,
                  const std::vector<std::array<double, 3>>& p, const std::vector<std::array<std::size_t, 2>>& border_edges,
-                 const std::vector<double>& border_length, double border_weight, const Solver& solver)
+                 const std::vector<double>& border_length, double border_weight, const Solver& solver,
+                 double area_preservation = 0.)
       : m_nv(nv), m_tri(tri), m_border(border_edges), m_lambda(border_weight), m_length(border_length),
-        m_solver(solver)
+        m_solver(solver), m_alpha(area_preservation)
   {
     const std::size_t nf = tri.size();
     m_dx.resize(nf);
@@ -86,11 +95,11 @@ public:
     return m_solver.factorize(m_matrix);
   }
 
-  // The best rotation of every face for `u`, and the energy of `u` with them.
-  // Each edge difference of `u` is formed once, for the rotation and the energy.
+  // The target map of every face for `u`, and the energy of `u` with them.
+  // Each edge difference of `u` is formed once, for the target and the energy.
   double local_step(const std::vector<Vector_2>& u)
   {
-    m_rot.resize(m_tri.size());
+    m_target.resize(m_tri.size());
     double energy = 0;
     for(std::size_t f = 0; f < m_tri.size(); ++f) {
       const std::array<std::size_t, 3>& t = m_tri[f];
@@ -107,13 +116,17 @@ public:
         c += w[k] * du[k][1] * dx[k][0];
         d += w[k] * du[k][1] * dx[k][1];
       }
+      // [[a, b], [c, d]] is J times a multiple of the identity (the sum of
+      // cot dx dx^T over the corners of a triangle is): its singular vectors
+      // and the ratio of its singular values are J's
       const double s = c - b, co = a + d, n = std::sqrt(s * s + co * co);
-      const Vector_2 r = n > 0 ? Vector_2{co / n, s / n} : Vector_2{1., 0.};
-      m_rot[f] = r;
+      Matrix_2 T = n > 0 ? Matrix_2{co / n, -s / n, s / n, co / n} : Matrix_2{1., 0., 0., 1.};
+      if(m_alpha > 0) target_of_determinant_one(a, b, c, d, T);
+      m_target[f] = T;
       double e = 0;
       for(int k = 0; k < 3; ++k) {
-        const double ex = du[k][0] - (r[0] * dx[k][0] - r[1] * dx[k][1]);
-        const double ey = du[k][1] - (r[1] * dx[k][0] + r[0] * dx[k][1]);
+        const double ex = du[k][0] - (T[0] * dx[k][0] + T[1] * dx[k][1]);
+        const double ey = du[k][1] - (T[2] * dx[k][0] + T[3] * dx[k][1]);
         e += w[k] * (ex * ex + ey * ey);
       }
       energy += e;
@@ -148,11 +161,11 @@ public:
       }
     };
     for(std::size_t f = 0; f < m_tri.size(); ++f) {
-      const Vector_2& r = m_rot[f];
+      const Matrix_2& T = m_target[f];
       for(int k = 0; k < 3; ++k) {
         const Vector_2& dx = m_dx[f][k];
-        add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k], r[0] * dx[0] - r[1] * dx[1],
-                 r[1] * dx[0] + r[0] * dx[1]);
+        add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k], T[0] * dx[0] + T[1] * dx[1],
+                 T[2] * dx[0] + T[3] * dx[1]);
       }
     }
     if(m_lambda > 0)
@@ -183,6 +196,25 @@ public:
   }
 
 private:
+  typedef std::array<double, 4> Matrix_2;  // row by row
+
+  // The target U diag(t, 1 / t) V^T for the map M = [[a, b], [c, d]] = U
+  // diag(s1, s2) V^T, s1 >= |s2|; `T` keeps the rotation where M is flipped
+  // or degenerate (s2 <= 0). M is the sum of a similarity and an
+  // anti-similarity, q Rot(a2) + r Ref(a1) (Ref(x) = [[cos x, sin x], [sin x,
+  // -cos x]]), with s1 = q + r and s2 = q - r; U diag(t, 1 / t) V^T is then
+  // (t + 1 / t) / 2 Rot(a2) + (t - 1 / t) / 2 Ref(a1): no angle is formed.
+  void target_of_determinant_one(double a, double b, double c, double d, Matrix_2& T) const
+  {
+    const double E = (a + d) / 2, F = (a - d) / 2, G = (c + b) / 2, H = (c - b) / 2;
+    const double q = std::sqrt(E * E + H * H), r = std::sqrt(F * F + G * G);
+    const double s1 = q + r, s2 = q - r;
+    if(!(s2 > 1e-12 * s1) || !(r > 0)) return;
+    const double t = (std::min)(std::pow(s1 / s2, m_alpha / 2), 2.);
+    const double p = (t + 1 / t) / 2 / q, m = (t - 1 / t) / 2 / r;
+    T = {p * E + m * F, m * G - p * H, p * H + m * G, p * E - m * F};
+  }
+
   // lambda sum (|u_i - u_j| - l)^2 over the border edges pulled to their lengths
   double spring_energy(const std::vector<Vector_2>& u) const
   {
@@ -206,7 +238,8 @@ private:
   // corner, from corner k + 1 to corner k + 2, and the cotangent of the corner
   std::vector<std::array<Vector_2, 3>> m_dx;
   std::vector<std::array<double, 3>> m_cot;
-  std::vector<Vector_2> m_rot;  // cos, sin of every face's rotation
+  double m_alpha;                  // area preservation
+  std::vector<Matrix_2> m_target;  // every face's target map
   std::vector<long> m_row;
   std::size_t m_unknowns = 0;
   double m_area = 0;
