@@ -48,7 +48,7 @@ trap 'rm -rf "$tmp"' EXIT
 run() {
   /usr/bin/time -f '%e %M' -o "$tmp/time" "$1" "$2" --json > "$tmp/json" 2> /dev/null || true
   local pieces
-  pieces=$(grep -o '"charts": [0-9]*' "$tmp/json" | head -1 | grep -o '[0-9]*$' || echo 0)
+  pieces=$(grep -o '"charts": *[0-9]*' "$tmp/json" | head -1 | grep -o '[0-9]*$' || echo 0)
   echo "$(cat "$tmp/time") ${pieces:-0}"
 }
 
@@ -75,7 +75,7 @@ for level in 1 2 3 4; do
 done
 
 mkdir -p benchmark/results
-python3 - "$results" "$commit" "$(git rev-parse --short HEAD)" "$runs" "$series_limit" > benchmark/results/segmentation.md <<'PY'
+python3 - "$results" "$commit" "$(git rev-parse --short HEAD)" "$runs" "$series_limit" > "$tmp/segmentation.md" <<'PY'
 import statistics, sys
 path, baseline, head, runs, limit = sys.argv[1:]
 compare, series = {}, []
@@ -85,6 +85,10 @@ for line in open(path):
         compare.setdefault(f[1], []).append([float(x) for x in f[2:8]])
     else:
         series.append(f[1:])
+# a report without a piece count is a failed run, not a segmentation into 0 pieces
+if any(r[2] == 0 or r[5] == 0 for rows in compare.values() for r in rows) or \
+   any(len(s) >= 5 and s[4] == "0" for s in series):
+    sys.exit("segmentation_benchmark: a run gave no piece count (it failed, or its report changed)")
 print("# Segmentation speed\n")
 print("`bash scripts/segmentation_benchmark.sh`: `segment_mesh --json` at its defaults, wall time, this tree "
       "(%s) and the baseline %s run in turn, %s times each; medians. Ratio = this tree / baseline.\n" % (head, baseline, runs))
@@ -105,4 +109,6 @@ for s in series:
     else:
         print("| %s | %s | %s | %.1f | %.0f |" % (s[0], s[1], s[4], float(s[2]), float(s[3]) / 1024))
 PY
+# written whole or not at all
+mv "$tmp/segmentation.md" benchmark/results/segmentation.md
 cat benchmark/results/segmentation.md
