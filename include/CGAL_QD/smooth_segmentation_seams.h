@@ -65,20 +65,18 @@ struct Seam_smoothing_result
 /// thresholds, and returns the refined mesh with its charts and their
 /// flattening. It works on copies; the input is not changed.
 ///
-/// Every border between two charts starts with the full smoothing of
-/// `smooth_chart_boundaries()` (32 rounds). After each try the charts are
-/// flattened again (`flatten_charts()`; a chart that the try left as it was
-/// takes its flattening from the try before); the borders around a chart that
-/// leaves the thresholds, and the borders between two charts whose seam no
-/// longer matches in length where it did (its two sides within 0.5 %), or
-/// whose sides end further apart than the worst seam of the input, are
-/// smoothed less at the next try (8 rounds, then 2: the staircase goes and the
-/// course of the border stays), then left along the edges; at most 8 tries.
-/// Then, on the mesh with its borders settled, the cuts inside the charts are
-/// smoothed by `smooth_chart_cuts()`: the cuts of a chart that leaves the
-/// thresholds, or with a seam that stops matching, go back to the edges; at
-/// most 2 tries. A try is kept when every chart is accepted (and, for the cuts,
-/// when every seam matches as well as it did and the seams are smoother).
+/// Every border between two charts (`smooth_chart_boundaries()`) and the cuts
+/// inside every chart (`smooth_chart_cuts()`) start with the full smoothing
+/// (32 rounds). After each try the charts are flattened again
+/// (`flatten_charts()`; a chart that the try left as it was takes its
+/// flattening from the try before); the borders and cuts of a chart that
+/// leaves the thresholds, the border between two charts whose seam no longer
+/// matches in length where it did (its two sides within 0.5 %) or whose sides
+/// end further apart than the worst seam of the input, and the borders and
+/// cuts of a chart with a cut that stops matching, are smoothed less at the
+/// next try (8 rounds, then 2: the staircase goes and the course of the seam
+/// stays), then left along the edges; at most 8 tries. The last try with every
+/// chart accepted is kept.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag` (for the flattenings); the result is the same
@@ -129,6 +127,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
 
   auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
   const std::array<std::size_t, 3> strengths = {{32, 8, 2}};  // smoothing rounds; level 3: along the edges
+  const int max_tries = 8;
   const std::size_t along_edges = strengths.size();
 
   // the cuts inside charts of the input
@@ -152,26 +151,18 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       return result;
     }
     const Chart_pair p = pair_of(a, b);
-    // the cuts wait along the edges until the borders are settled
-    if(level.emplace(p, a == b ? along_edges : 0).second) {
+    if(level.emplace(p, 0).second) {
       pairs_of[a].push_back(p);
       if(a != b) pairs_of[b].push_back(p);
     }
   }
-  const bool has_cuts = std::any_of(level.begin(), level.end(), [](const auto& p) { return p.first.first == p.first.second; });
   auto smooth_less = [&](const Chart_pair& p) {
     std::size_t& l = level[p];
     if(l == along_edges) return false;
     ++l;
     return true;
   };
-  auto cuts_along_edges = [&](std::size_t c) {
-    const auto it = level.find(pair_of(c, c));
-    if(it == level.end() || it->second == along_edges) return false;
-    it->second = along_edges;
-    return true;
-  };
-  // the seams that did not match before a phase, with their worst mismatch
+  // the seams of the input that did not match, with their worst mismatch
   std::map<Chart_pair, double> unmatched_before;
   for(const Chart_pair& p : segmentation.unmatched_seams) unmatched_before[p] = segmentation.max_seam_length_mismatch;
 
@@ -179,41 +170,11 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   internal::Flattening_cache<Chart_report> cache;
   std::shared_ptr<Try> best;                      // the last try with every chart accepted
   Chart_flattening_result<TriangleMesh> best_flattening;
-  // the mesh with the borders settled, in the second phase; null: the input
-  std::shared_ptr<Try> settled;
-  Boundary_smoothing_result settled_result;
-  bool cut_phase = false;
-  std::size_t border_curves = 0, cut_curves = 0;
   double zigzag_before = 1;
-  // the borders are settled: the cuts next, on the mesh of the last try that
-  // was kept (the input if none was)
-  auto start_cut_phase = [&]() {
-    if(cut_phase || !has_cuts) return false;
-    cut_phase = true;
-    for(auto& p : level)
-      if(p.first.first == p.first.second) p.second = 0;
-    if(best) {
-      settled = best;
-      settled_result = result.smoothing;
-      unmatched_before.clear();
-      for(std::size_t i = 0; i < best_flattening.unmatched_seams.size(); ++i) {
-        double& m = unmatched_before[best_flattening.unmatched_seams[i]];
-        m = (std::max)(m, best_flattening.unmatched_seam_mismatch[i]);
-      }
-    }
-    return true;
-  };
 
-  for(int round = 0, phase_round = 0;; ++round, ++phase_round) {
-    if(phase_round == (cut_phase ? 2 : 8)) {
-      if(!start_cut_phase()) break;
-      phase_round = 0;
-    }
+  for(int round = 0; round < max_tries; ++round) {
     auto trial = std::make_shared<Try>();
-    if(settled)
-      trial->copy(settled->mesh, settled->chart, [&](edge_descriptor e) { return get(settled->cut, e); });
-    else
-      trial->copy(tm, face_chart, is_input_cut);
+    trial->copy(tm, face_chart, is_input_cut);
     TriangleMesh& mesh = trial->mesh;
     auto& chart = trial->chart;
     auto& cut = trial->cut;
@@ -240,8 +201,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       return seam_zigzag(mesh, all).zigzag;
     };
     if(round == 0) zigzag_before = zigzag();
-    // what the calls of this try did (with the settled borders in the second phase)
-    Boundary_smoothing_result sr = settled_result;
+    // what the calls of this try did
+    Boundary_smoothing_result sr;
     bool called = false;
     auto add = [&](const Boundary_smoothing_result& s) {
       sr.status = s.status;
@@ -260,7 +221,6 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       // the borders at level l, every other one and the cuts staying
       bool borders = false;
       for(edge_descriptor e : edges(mesh)) {
-        if(cut_phase) break;
         const halfedge_descriptor h = halfedge(e, mesh);
         if(is_border_edge(h, mesh)) continue;
         const std::size_t a = chart_of(h), b = chart_of(opposite(h, mesh));
@@ -288,16 +248,14 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
         cuts = cuts || now;
       }
       if(cuts) {
-        const Boundary_smoothing_result s = smooth_chart_cuts(
-            mesh, chart, cut_now, CGAL::parameters::edge_is_constrained_map(cut).number_of_iterations(strengths[l]));
-        if(cut_curves == 0) cut_curves = s.number_of_curves;
-        add(s);
+        add(smooth_chart_cuts(mesh, chart, cut_now,
+                              CGAL::parameters::edge_is_constrained_map(cut).number_of_iterations(strengths[l])));
         for(edge_descriptor e : edges(mesh))
           if(get(cut_now, e)) put(cut, e, true);
       }
     }
     if(round == 0) {
-      border_curves = sr.number_of_curves;
+      result.number_of_curves = sr.number_of_curves;
       result.smoothing = sr;
       result.smoothing.zigzag_before = result.smoothing.zigzag_after = zigzag_before;
     }
@@ -305,14 +263,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       result.status = sr.status;
       break;
     }
-    if(!called || sr.curves_smoothed == settled_result.curves_smoothed) {
-      // nothing smoothed in this try
-      if(start_cut_phase()) {
-        phase_round = -1;
-        continue;
-      }
-      break;
-    }
+    if(!called || sr.curves_smoothed == 0) break;  // nothing smoothed in this try
     sr.zigzag_before = zigzag_before;
     sr.zigzag_after = zigzag();
     // the cuts inside charts, and the halves of a cut edge that the smoothing
@@ -335,50 +286,34 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     ++result.tries;
     if(!f || f.number_of_charts != segmentation.number_of_charts) break;
     if(!best) result.rejected_charts = f.rejected_charts;
-    // in the first phase, the borders of a rejected chart are smoothed less,
-    // and so is a seam whose sides no longer match, or differ by more than
-    // the worst seam did before the smoothing (for a cut inside a chart: all
-    // the borders of the chart); in the second phase, the cuts of the charts
-    // concerned go back to the edges
+    // the borders and cuts of a rejected chart are smoothed less, and so is
+    // a seam whose sides no longer match, or differ by more than the worst
+    // seam did before the smoothing (for a cut inside a chart: the borders
+    // and cuts of the chart)
     bool changed = false;
     for(std::size_t k = 0; k < f.charts.size(); ++k)
-      if(!f.charts[k].accepted) {
-        if(cut_phase)
-          changed = cuts_along_edges(k) || changed;
-        else
-          for(const Chart_pair& p : pairs_of[k]) changed = smooth_less(p) || changed;
-      }
-    bool matched = true;
+      if(!f.charts[k].accepted)
+        for(const Chart_pair& p : pairs_of[k]) changed = smooth_less(p) || changed;
     for(std::size_t i = 0; i < f.unmatched_seams.size(); ++i) {
       const Chart_pair& pair = f.unmatched_seams[i];
       const auto before = unmatched_before.find(pair);
       if(before != unmatched_before.end() &&
          f.unmatched_seam_mismatch[i] <= (std::max)(before->second, segmentation.max_seam_length_mismatch))
         continue;
-      matched = false;
-      if(cut_phase) {
-        changed = cuts_along_edges(pair.first) || changed;
-        changed = cuts_along_edges(pair.second) || changed;
-      } else if(pair.first != pair.second) {
+      if(pair.first != pair.second) {
         changed = smooth_less(pair) || changed;
       } else {
         for(const Chart_pair& p : pairs_of[pair.first]) changed = smooth_less(p) || changed;
       }
     }
-    // kept if every chart is accepted; in the second phase, only if every seam
-    // still matches as well as it did and the seams are smoother
-    if(f.rejected_charts == 0 &&
-       (!cut_phase || !best || (matched && f.seam_zigzag < best_flattening.seam_zigzag))) {
+    // kept if every chart is accepted
+    if(f.rejected_charts == 0) {
       result.smoothing = sr;
       best = trial;
       best_flattening = std::move(f);
     }
-    if(!changed) {
-      if(!start_cut_phase()) break;
-      phase_round = -1;
-    }
+    if(!changed) break;
   }
-  result.number_of_curves = border_curves + cut_curves;
   if(result.status == Error_code::OK && best) {
     result.kept = true;
     result.flattening = best->copy_into(out, out_chart, best_flattening);
