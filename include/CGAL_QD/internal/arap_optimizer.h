@@ -48,6 +48,7 @@ public:
     const std::size_t nf = tri.size();
     m_dx.resize(nf);
     m_cot.resize(nf);
+    m_kappa.resize(nf);
     m_area = 0;
     for(std::size_t f = 0; f < nf; ++f) {
       const std::array<double, 3>&a = p[tri[f][0]], &b = p[tri[f][1]], &c = p[tri[f][2]];
@@ -66,6 +67,7 @@ public:
         m_cot[f][k] = (u[0] * w[0] + u[1] * w[1]) / std::abs(u[0] * w[1] - u[1] * w[0]);
         m_dx[f][k] = {q[0] - r[0], q[1] - r[1]};
       }
+      m_kappa[f] = {l1 * h, l1 * h > 0 ? 1 / (l1 * h) : 0.};  // twice the area
     }
   }
 
@@ -96,43 +98,48 @@ public:
   }
 
   // The target map of every face for `u`, and the energy of `u` with them.
-  // Each edge difference of `u` is formed once, for the target and the energy.
+  //
+  // For a face with isometric edge vectors dx_k (opposite corner k) and
+  // cotangent weights w_k, sum_k w_k dx_k dx_k^T = kappa I with kappa = 2
+  // area. The image edges are du_k = J dx_k for the face's linear map J, so
+  // M = sum_k w_k du_k dx_k^T = kappa J and the face's energy for a target T
+  // is sum_k w_k |du_k - T dx_k|^2 = kappa |J - T|_F^2 = |M - kappa T|_F^2 /
+  // kappa: a sum of squares formed from M alone. The first pass gathers `u`
+  // into M (kept in the target array); the second finds the targets and the
+  // energy without touching `u`, so that the square roots and divisions of
+  // neighbouring faces overlap.
   double local_step(const std::vector<Vector_2>& u)
   {
-    m_target.resize(m_tri.size());
-    double energy = 0;
-    for(std::size_t f = 0; f < m_tri.size(); ++f) {
+    const std::size_t nf = m_tri.size();
+    m_target.resize(nf);
+    for(std::size_t f = 0; f < nf; ++f) {
       const std::array<std::size_t, 3>& t = m_tri[f];
       const std::array<Vector_2, 3>& dx = m_dx[f];
       const std::array<double, 3>& w = m_cot[f];
-      double du[3][2];
-      double a = 0, b = 0, c = 0, d = 0;  // sum cot du dx^T
+      double a = 0, b = 0, c = 0, d = 0;
       for(int k = 0; k < 3; ++k) {
         const Vector_2 &ui = u[t[(k + 1) % 3]], &uj = u[t[(k + 2) % 3]];
-        du[k][0] = ui[0] - uj[0];
-        du[k][1] = ui[1] - uj[1];
-        a += w[k] * du[k][0] * dx[k][0];
-        b += w[k] * du[k][0] * dx[k][1];
-        c += w[k] * du[k][1] * dx[k][0];
-        d += w[k] * du[k][1] * dx[k][1];
+        const double dux = ui[0] - uj[0], duy = ui[1] - uj[1];
+        a += w[k] * dux * dx[k][0];
+        b += w[k] * dux * dx[k][1];
+        c += w[k] * duy * dx[k][0];
+        d += w[k] * duy * dx[k][1];
       }
-      // [[a, b], [c, d]] is J times a multiple of the identity (the sum of
-      // cot dx dx^T over the corners of a triangle is): its singular vectors
-      // and the ratio of its singular values are J's
-      // [[a, b], [c, d]] = q Rot + r Ref (see `target_of_determinant_one`):
+      m_target[f] = {a, b, c, d};
+    }
+    double energy = 0;
+    for(std::size_t f = 0; f < nf; ++f) {
+      Matrix_2& T = m_target[f];
+      const double a = T[0], b = T[1], c = T[2], d = T[3];
+      // M = [[a, b], [c, d]] = q Rot + r Ref (see `target_of_determinant_one`):
       // the closest rotation is Rot
       const double E = (a + d) / 2, F = (a - d) / 2, G = (c + b) / 2, H = (c - b) / 2;
       const double q = std::sqrt(E * E + H * H);
-      Matrix_2 T = q > 0 ? Matrix_2{E / q, -H / q, H / q, E / q} : Matrix_2{1., 0., 0., 1.};
-      if(m_alpha > 0) target_of_determinant_one(E, F, G, H, q, T);
-      m_target[f] = T;
-      double e = 0;
-      for(int k = 0; k < 3; ++k) {
-        const double ex = du[k][0] - (T[0] * dx[k][0] + T[1] * dx[k][1]);
-        const double ey = du[k][1] - (T[2] * dx[k][0] + T[3] * dx[k][1]);
-        e += w[k] * (ex * ex + ey * ey);
-      }
-      energy += e;
+      if(!(m_alpha > 0) || !target_of_determinant_one(E, F, G, H, q, T))
+        T = q > 0 ? Matrix_2{E / q, -H / q, H / q, E / q} : Matrix_2{1., 0., 0., 1.};
+      const double k = m_kappa[f][0];
+      const double ea = a - k * T[0], eb = b - k * T[1], ec = c - k * T[2], ed = d - k * T[3];
+      energy += (ea * ea + eb * eb + ec * ec + ed * ed) * m_kappa[f][1];
     }
     return (energy + spring_energy(u)) / m_area;
   }
@@ -201,22 +208,27 @@ public:
 private:
   typedef std::array<double, 4> Matrix_2;  // row by row
 
-  // The target U diag(t, 1 / t) V^T for the map M = [[a, b], [c, d]] = U
-  // diag(s1, s2) V^T, s1 >= |s2|; `T` keeps the rotation where M is flipped
-  // or degenerate (s2 <= 0). M is the sum of a similarity and an
+  // Sets `T` to the target U diag(t, 1 / t) V^T for the map M = [[a, b],
+  // [c, d]] = U diag(s1, s2) V^T, s1 >= |s2|; returns false, leaving `T`
+  // alone, where M is flipped or degenerate (s2 <= 0) or a similarity (the
+  // target is then the rotation). M is the sum of a similarity and an
   // anti-similarity, q Rot(a2) + r Ref(a1) (Ref(x) = [[cos x, sin x], [sin x,
   // -cos x]]), with s1 = q + r and s2 = q - r; U diag(t, 1 / t) V^T is then
   // (t + 1 / t) / 2 Rot(a2) + (t - 1 / t) / 2 Ref(a1): no angle is formed.
   // Here E = (a + d) / 2, F = (a - d) / 2, G = (c + b) / 2, H = (c - b) / 2
-  // and q = |(E, H)|.
-  void target_of_determinant_one(double E, double F, double G, double H, double q, Matrix_2& T) const
+  // and q = |(E, H)|. The factors (t + 1 / t) / (2 q) and (t - 1 / t) / (2 r)
+  // share one division: this runs for every face in every iteration, and
+  // divisions and square roots are most of its cost.
+  bool target_of_determinant_one(double E, double F, double G, double H, double q, Matrix_2& T) const
   {
     const double r = std::sqrt(F * F + G * G);
     const double s1 = q + r, s2 = q - r;
-    if(!(s2 > 1e-12 * s1) || !(r > 0)) return;
+    if(!(s2 > 1e-12 * s1) || !(r > 0)) return false;
     const double t = (std::min)(ratio_power(s1 / s2), 2.);
-    const double p = (t + 1 / t) / 2 / q, m = (t - 1 / t) / 2 / r;
+    const double k = 0.5 / (t * q * r);
+    const double p = (t * t + 1) * r * k, m = (t * t - 1) * q * k;
     T = {p * E + m * F, m * G - p * H, p * H + m * G, p * E - m * F};
+    return true;
   }
 
   // x^(alpha / 2): the fourth root for the segmentation's 0.5 and the square
@@ -251,6 +263,8 @@ private:
   // corner, from corner k + 1 to corner k + 2, and the cotangent of the corner
   std::vector<std::array<Vector_2, 3>> m_dx;
   std::vector<std::array<double, 3>> m_cot;
+  // per face: kappa with sum_k cot_k dx_k dx_k^T = kappa I (twice the area), and 1 / kappa
+  std::vector<std::array<double, 2>> m_kappa;
   double m_alpha;                  // area preservation
   std::vector<Matrix_2> m_target;  // every face's target map
   std::vector<long> m_row;
