@@ -25,6 +25,8 @@
 #include <CGAL_QD/vsa_segmentation.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Variational_shape_approximation.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <boost/property_map/function_property_map.hpp>
@@ -793,6 +795,102 @@ BOOST_AUTO_TEST_CASE(vsa_chart_count_does_not_depend_on_the_resolution)
   std::vector<Series_row> rows;
   for(int level : {-2, -1, 0, 1}) rows.push_back(segment_at_resolution("elephant", elephant, level, ""));
   expect_counts_within_15_percent(rows);
+}
+
+// Step 1 runs its own Lloyd iteration (internal/normal_vsa.h) in place of
+// CGAL's Variational_shape_approximation; it must take the same decisions:
+// the same charts after every operation that step 1 uses, with the same
+// errors, on meshes with planar parts (ties of the flooding on fandisk), with
+// smoothed normals, and on a mesh of two components.
+namespace {
+
+// the L2,1 metric on given normals, as CGAL's class needs it
+struct Given_normals_metric
+{
+  typedef Epick::Vector_3 Proxy;
+  typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
+  const std::vector<QD::internal::Face_geometry>* geo;
+
+  double compute_error(face_descriptor f, const Surface_mesh&, const Proxy& px) const
+  {
+    const QD::internal::Face_geometry& d = (*geo)[f.idx()];
+    const double x = d.normal[0] - px.x(), y = d.normal[1] - px.y(), z = d.normal[2] - px.z();
+    return d.area * (x * x + y * y + z * z);
+  }
+  template <class FaceRange>
+  Proxy fit_proxy(const FaceRange& range, const Surface_mesh&) const
+  {
+    double s[3] = {0., 0., 0.};
+    for(face_descriptor f : range)
+      for(int i = 0; i < 3; ++i) s[i] += (*geo)[f.idx()].area * (*geo)[f.idx()].normal[i];
+    const double l = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    return l > 0 ? Proxy(s[0] / l, s[1] / l, s[2] / l) : Proxy(0., 0., 0.);
+  }
+};
+
+// runs the two through the same operations; returns how many were compared
+std::size_t compare_with_cgal_vsa(const Surface_mesh& tm, const std::vector<QD::internal::Face_geometry>& geo,
+                                  const std::string& name)
+{
+  const auto fim = get(CGAL::face_index, tm);
+  const Given_normals_metric metric{&geo};
+  CGAL::Variational_shape_approximation<Surface_mesh, Surface_mesh::Property_map<Surface_mesh::Vertex_index, Epick::Point_3>,
+                                        Given_normals_metric>
+      cgal(tm, tm.points(), metric);
+  QD::internal::Normal_vsa ours(geo, QD::internal::face_neighbours(tm, fim), QD::internal::faces_in_order(tm, fim));
+  cgal.initialize_seeds(CGAL::parameters::seeding_method(CGAL::Surface_mesh_approximation::INCREMENTAL)
+                            .max_number_of_proxies(1)
+                            .number_of_relaxations(3));
+  ours.bootstrap();
+  std::size_t compared = 0;
+  auto same = [&](const std::string& step) {
+    std::vector<std::size_t> theirs(num_faces(tm));
+    cgal.proxy_map(boost::make_iterator_property_map(theirs.begin(), fim));
+    BOOST_TEST(cgal.number_of_proxies() == ours.number_of_proxies(), name << ", " << step);
+    BOOST_TEST((theirs == ours.proxy_of()), name << ", " << step << ": the faces' proxies differ");
+    ++compared;
+  };
+  same("seeds");
+  BOOST_TEST(cgal.run(3) == ours.run(3), name);
+  same("first relaxation");
+  for(int round = 0; round < 6; ++round) {
+    const std::size_t add = round % 3 == 2 ? 1 : 2 + round;
+    const std::size_t a = add == 1 ? cgal.add_to_furthest_proxies(1, 0) : cgal.add_proxies_error_diffusion(add);
+    const std::size_t b = add == 1 ? ours.add_to_furthest_proxies(1, 0) : ours.add_proxies_error_diffusion(add);
+    BOOST_TEST(a == b, name << ", round " << round);
+    same("round " + std::to_string(round) + ", added");
+    BOOST_TEST(cgal.run(3) == ours.run(3), name << ", round " << round);
+    same("round " + std::to_string(round) + ", relaxed");
+  }
+  return compared;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(vsa_iteration_takes_the_decisions_of_cgal_vsa)
+{
+  for(const char* name : {"fandisk", "elephant", "cow"}) {
+    Surface_mesh tm;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/" + name + ".off", tm));
+    const auto fim = get(CGAL::face_index, tm);
+    const std::vector<QD::internal::Face_geometry> raw = QD::internal::face_geometry(tm, tm.points(), fim);
+    BOOST_TEST(compare_with_cgal_vsa(tm, raw, name) == 14u);
+    if(std::string(name) == "elephant")  // with the normals that step 1 uses
+      compare_with_cgal_vsa(tm, QD::internal::smooth_face_normals(tm, fim, raw, 0.05, QD::internal::vsa_crease_cos),
+                            "elephant, smoothed");
+  }
+  // two components: one proxy each to start with
+  Surface_mesh two;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/fandisk.off", two));
+  Surface_mesh copy = two;
+  for(auto v : vertices(copy)) copy.point(v) = copy.point(v) + Epick::Vector_3(10, 0, 0);
+  CGAL::copy_face_graph(copy, two);
+  const auto fim = get(CGAL::face_index, two);
+  const std::vector<QD::internal::Face_geometry> geo = QD::internal::face_geometry(two, two.points(), fim);
+  QD::internal::Normal_vsa ours(geo, QD::internal::face_neighbours(two, fim), QD::internal::faces_in_order(two, fim));
+  ours.bootstrap();
+  BOOST_TEST(ours.number_of_proxies() == 2u);
+  compare_with_cgal_vsa(two, geo, "two fandisks");
 }
 
 // On fine meshes step 1 averages the face normals over discs gathered from

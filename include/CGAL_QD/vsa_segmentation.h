@@ -13,12 +13,12 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/normal_vsa.h>
 #include <CGAL_QD/internal/smooth_face_normals.h>
 #include <CGAL_QD/internal/union_find.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Variational_shape_approximation.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -112,36 +112,6 @@ void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo,
   }
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
 }
-
-// The L2,1 metric of CGAL's `L21_metric_plane_proxy` on given per-face normals
-// and areas: a model of `ErrorMetricProxy` for `Variational_shape_approximation`.
-template <class TriangleMesh, class FIM, class Vector_3>
-struct Given_normals_L21_metric
-{
-  typedef Vector_3 Proxy;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  const std::vector<Face_geometry>* geo;
-  FIM fim;
-
-  double compute_error(const face_descriptor f, const TriangleMesh&, const Proxy& px) const
-  {
-    const Face_geometry& d = (*geo)[get(fim, f)];
-    const double x = d.normal[0] - px.x(), y = d.normal[1] - px.y(), z = d.normal[2] - px.z();
-    return d.area * (x * x + y * y + z * z);
-  }
-
-  template <class FaceRange>
-  Proxy fit_proxy(const FaceRange& range, const TriangleMesh&) const
-  {
-    double s[3] = {0., 0., 0.};
-    for(const face_descriptor f : range) {
-      const Face_geometry& d = (*geo)[get(fim, f)];
-      for(int i = 0; i < 3; ++i) s[i] += d.area * d.normal[i];
-    }
-    const double l = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-    return l > 0 ? Proxy(s[0] / l, s[1] / l, s[2] / l) : Proxy(0., 0., 0.);
-  }
-};
 
 // a property map that stores face values in a vector by face index
 template <class Face, class FIM>
@@ -283,7 +253,8 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 ///   - `number_of_relaxations`: relaxation iterations after each round of additions (default 3)
 ///   - `vertex_point_map`, `face_index_map`
 /// \returns a `Vsa_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`
-///          or `DEGENERATE_FACE` on invalid input, in which case nothing is written.
+///          or `DEGENERATE_FACE` on invalid input, `INVALID_ARGUMENT` for a mesh of
+///          2^32 faces or more, in which case nothing is written.
 template <class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap face_chart,
@@ -305,6 +276,10 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
 
   result.status = internal::validate_mesh_to_segment(tm, vpm);
   if(result.status != Error_code::OK) return result;
+  if(nf > internal::Normal_vsa::max_faces) {
+    result.status = Error_code::INVALID_ARGUMENT;
+    return result;
+  }
 
   typedef typename std::remove_const<decltype(fim)>::type FIM;
   const std::vector<internal::Face_geometry> raw = internal::face_geometry(tm, vpm, fim);
@@ -329,26 +304,18 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
                                                    (std::max<std::size_t>)(1, geometric_cap));
   result.max_number_of_proxies = max_proxies;
 
-  typedef typename std::remove_const<decltype(vpm)>::type VPM;
-  typedef typename CGAL::Kernel_traits<typename boost::property_traits<VPM>::value_type>::Kernel::Vector_3 Vector_3;
-  typedef internal::Given_normals_L21_metric<TriangleMesh, FIM, Vector_3> Metric;
-  typedef CGAL::Variational_shape_approximation<TriangleMesh, VPM, Metric> VSA;
-  const Metric metric{&geo, fim};
-  VSA vsa(tm, vpm, metric);
-  vsa.initialize_seeds(CGAL::parameters::seeding_method(CGAL::Surface_mesh_approximation::INCREMENTAL)
-                           .max_number_of_proxies(1)
-                           .number_of_relaxations(relaxations));
+  internal::Normal_vsa vsa(geo, internal::face_neighbours(tm, fim), internal::faces_in_order(tm, fim));
+  vsa.bootstrap();
   const std::size_t first_proxies = vsa.number_of_proxies();
   vsa.run(relaxations);
 
-  std::vector<std::size_t> chart(nf);
+  std::vector<std::size_t> chart;
   auto proxy_of = [&](face_descriptor f) { return chart[get(fim, f)]; };
-  const internal::Indexed_face_writer<face_descriptor, FIM> writer{&chart, fim};
   auto violates = [&](std::size_t k) {
     return result.chart_error[k] > tolerance && result.chart_area[k] >= result.min_chart_area;
   };
   for(;;) {
-    vsa.proxy_map(writer);
+    chart = vsa.proxy_of();
     internal::chart_errors(tm, geo, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
     std::size_t violating = 0;
     for(std::size_t k = 0; k < result.chart_error.size(); ++k) violating += violates(k) ? 1 : 0;
@@ -358,8 +325,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     // proportion to their error, then relax once (every round re-partitions
     // the whole mesh, so the number of rounds sets the time)
     const std::size_t add = (std::min)(max_proxies - vsa.number_of_proxies(), violating);
-    const std::size_t added = add == 1 ? std::size_t(vsa.add_to_furthest_proxies(1, 0))
-                                       : vsa.add_proxies_error_diffusion(add);
+    const std::size_t added = add == 1 ? vsa.add_to_furthest_proxies(1, 0) : vsa.add_proxies_error_diffusion(add);
     if(added == 0) break;
     vsa.run(relaxations);
   }
