@@ -168,12 +168,12 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
 
   // the charts that a try leaves as they were flatten as they did at the try before
   internal::Flattening_cache<Chart_report> cache;
-  std::shared_ptr<Try> best;                      // the last try with every chart accepted
+  std::unique_ptr<Try> best;  // the last try with every chart accepted
   Chart_flattening_result<TriangleMesh> best_flattening;
   double zigzag_before = 1;
 
   for(int round = 0; round < max_tries; ++round) {
-    auto trial = std::make_shared<Try>();
+    auto trial = std::make_unique<Try>();
     trial->copy(tm, face_chart, is_input_cut);
     TriangleMesh& mesh = trial->mesh;
     auto& chart = trial->chart;
@@ -309,7 +309,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     // kept if every chart is accepted
     if(f.rejected_charts == 0) {
       result.smoothing = sr;
-      best = trial;
+      best = std::move(trial);
       best_flattening = std::move(f);
     }
     if(!changed) break;
