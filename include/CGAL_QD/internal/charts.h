@@ -40,6 +40,26 @@ std::size_t read_charts(const TriangleMesh& tm, const FaceChartMap& face_chart, 
   return ids.size();
 }
 
+// the faces across the edges of every face (by face index), in the order of
+// `faces_around_face()`; `std::size_t(-1)` across a border
+template <class TriangleMesh, class FIM>
+std::vector<std::array<std::size_t, 3>> face_neighbours(const TriangleMesh& tm, const FIM& fim)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<std::array<std::size_t, 3>> next_to(num_faces(tm));
+  for(typename GT::face_descriptor f : faces(tm)) {
+    std::array<std::size_t, 3>& n = next_to[get(fim, f)];
+    n.fill(std::size_t(-1));
+    int k = 0;
+    for(typename GT::face_descriptor g : CGAL::faces_around_face(halfedge(f, tm), tm)) {
+      if(k == 3) break;  // triangles only
+      if(g != GT::null_face()) n[k] = get(fim, g);
+      ++k;
+    }
+  }
+  return next_to;
+}
+
 // Per-face unit normal, area and centroid.
 struct Face_geometry
 {

@@ -20,10 +20,6 @@
 
 #include <CGAL_QD/internal/charts.h>
 
-#include <CGAL/boost/graph/iterator.h>
-
-#include <boost/graph/graph_traits.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,26 +30,6 @@
 
 namespace CGAL_QD {
 namespace internal {
-
-// the faces across the edges of every face (by face index), in the order of
-// `faces_around_face()`; `std::size_t(-1)` across a border
-template <class TriangleMesh, class FIM>
-std::vector<std::array<std::size_t, 3>> face_neighbours(const TriangleMesh& tm, const FIM& fim)
-{
-  typedef boost::graph_traits<TriangleMesh> GT;
-  std::vector<std::array<std::size_t, 3>> next_to(num_faces(tm));
-  for(typename GT::face_descriptor f : faces(tm)) {
-    std::array<std::size_t, 3>& n = next_to[get(fim, f)];
-    n.fill(std::size_t(-1));
-    int k = 0;
-    for(typename GT::face_descriptor g : CGAL::faces_around_face(halfedge(f, tm), tm)) {
-      if(k == 3) break;  // triangles only
-      if(g != GT::null_face()) n[k] = get(fim, g);
-      ++k;
-    }
-  }
-  return next_to;
-}
 
 // the face indices in the order of `faces(tm)`
 template <class TriangleMesh, class FIM>
@@ -88,7 +64,7 @@ public:
     m_proxies.clear();
     if(m_order.empty()) return;
     std::vector<std::vector<std::size_t>> components;
-    std::size_t seed = m_order.front(), component = 0;
+    std::size_t seed = m_order.front(), component = 0, next = 0;
     for(;;) {
       std::vector<std::size_t> patch(1, seed);
       std::stack<std::size_t> stack;
@@ -105,15 +81,12 @@ public:
           }
       }
       components.push_back(std::move(patch));
-      bool all = true;
-      for(std::size_t f : m_order)
-        if(m_proxy_of[f] == none) {
-          all = false;
-          ++component;
-          seed = f;
-          break;
-        }
-      if(all) break;
+      // the first face not reached yet, in face order (the faces before the
+      // last seed all were)
+      while(next < m_order.size() && m_proxy_of[m_order[next]] != none) ++next;
+      if(next == m_order.size()) break;
+      ++component;
+      seed = m_order[next];
     }
     for(const std::vector<std::size_t>& patch : components) m_proxies.push_back(fit(patch.begin(), patch.end()));
   }

@@ -11,10 +11,6 @@
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/constants.h>
 
-#include <CGAL/boost/graph/iterator.h>
-
-#include <boost/graph/graph_traits.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -38,24 +34,15 @@ template <class TriangleMesh, class FIM>
 std::vector<std::array<std::size_t, 3>> smooth_neighbours(const TriangleMesh& tm, const FIM& fim,
                                                           const std::vector<Face_geometry>& geo, double sharp_cos)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
   const std::size_t none = std::size_t(-1);
-  std::vector<std::array<std::size_t, 3>> next_to(geo.size(), {none, none, none});
-  for(typename GT::face_descriptor f : faces(tm)) {
-    const std::size_t i = get(fim, f);
-    int j = 0;
-    for(typename GT::halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      if(j == 3) break;
-      const typename GT::halfedge_descriptor o = opposite(h, tm);
-      std::size_t g = is_border(o, tm) ? none : std::size_t(get(fim, face(o, tm)));
-      if(g != none) {
-        const double dot = geo[i].normal[0] * geo[g].normal[0] + geo[i].normal[1] * geo[g].normal[1] +
-                           geo[i].normal[2] * geo[g].normal[2];
-        if(dot < sharp_cos) g = none;
-      }
-      next_to[i][j++] = g;
+  std::vector<std::array<std::size_t, 3>> next_to = face_neighbours(tm, fim);
+  for(std::size_t i = 0; i < next_to.size(); ++i)
+    for(std::size_t& g : next_to[i]) {
+      if(g == none) continue;
+      const double dot = geo[i].normal[0] * geo[g].normal[0] + geo[i].normal[1] * geo[g].normal[1] +
+                         geo[i].normal[2] * geo[g].normal[2];
+      if(dot < sharp_cos) g = none;
     }
-  }
   return next_to;
 }
 
