@@ -354,6 +354,50 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(arap_lowers_the_stretch_of_a_cap, Mesh, Mesh_types
   BOOST_TEST(QD::compute_distortion(tm, pulled.pmap_const()).flipped_faces == 0u);
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_callback_sees_every_map_and_can_stop, Mesh, Mesh_types)
+{
+  // the cap of 70 degrees, free border, half of the anisotropy kept: the
+  // callback is called after every iteration with that iteration's map in
+  // `uv`; a callback that never stops changes nothing, one that stops at
+  // iteration 5 leaves the map of 5 iterations
+  const Mesh tm = make<Mesh>(polar(12, 48, sphere_cap(70 * pi / 180)));
+  const auto f = flatten(tm);
+  const auto np = QD::parameters::arap_border(QD::Arap_border::FREE, QD::parameters::area_preservation(0.5));
+  Uv_store<Mesh> plain = f.uv, five = f.uv;
+  const QD::Optimization_result p = QD::optimize_flattening(tm, plain.pmap(), np);
+  BOOST_REQUIRE_MESSAGE(p, QD::error_message(p.status));
+  BOOST_TEST_MESSAGE("cap: " << p.iterations << " iterations");
+  BOOST_REQUIRE(p.iterations > 5u);
+  BOOST_REQUIRE(QD::optimize_flattening(tm, five.pmap(), np.number_of_iterations(5)));
+
+  Uv_store<Mesh> watched = f.uv;
+  std::vector<std::size_t> seen;
+  std::vector<double> a_loc;
+  const QD::Optimization_result w =
+      QD::optimize_flattening(tm, watched.pmap(), QD::parameters::iteration_callback([&](std::size_t it) {
+        seen.push_back(it);
+        a_loc.push_back(QD::compute_distortion(tm, watched.pmap_const()).local_area_distortion);
+        return false;
+      }, np));
+  BOOST_REQUIRE_MESSAGE(w, QD::error_message(w.status));
+  BOOST_TEST(!w.stopped_by_callback);
+  BOOST_TEST(w.iterations == p.iterations);
+  BOOST_TEST((watched.map == plain.map));
+  BOOST_REQUIRE(seen.size() == p.iterations);
+  for(std::size_t k = 0; k < seen.size(); ++k) BOOST_TEST(seen[k] == k + 1);
+  // the map seen last is the result
+  BOOST_TEST(a_loc.back() == QD::compute_distortion(tm, plain.pmap_const()).local_area_distortion);
+
+  Uv_store<Mesh> stopped = f.uv;
+  const QD::Optimization_result s = QD::optimize_flattening(
+      tm, stopped.pmap(), QD::parameters::iteration_callback([](std::size_t it) { return it == 5; }, np));
+  BOOST_REQUIRE_MESSAGE(s, QD::error_message(s.status));
+  BOOST_TEST(s.stopped_by_callback);
+  BOOST_TEST(s.iterations == 5u);
+  BOOST_TEST((stopped.map == five.map));
+  BOOST_TEST(QD::compute_distortion(tm, stopped.pmap_const()).local_area_distortion == a_loc[4]);
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(area_preservation_trades_shear_for_area, Mesh, Mesh_types)
 {
   // the cap of 70 degrees, free border: the more of its anisotropy every face

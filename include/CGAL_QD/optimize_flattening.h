@@ -73,6 +73,8 @@ struct Optimization_result
   Error_code border_status = Error_code::OK;
   /// with `LENGTH_PRESERVED`: whether every border edge has its target length (up to the border solver's tolerance)
   bool lengths_preserved = false;
+  /// whether `CGAL_QD::parameters::iteration_callback` stopped the iteration
+  bool stopped_by_callback = false;
   double time_ms = 0;
 
   explicit operator bool() const { return status == Error_code::OK; }
@@ -137,14 +139,22 @@ struct Arap_options
   double area_preservation = 0.;  // see Arap_optimizer
 };
 
+// no callback: the iteration never stops early
+struct No_iteration_callback
+{
+  bool operator()(std::size_t, const std::vector<std::array<double, 2>>&) const { return false; }
+};
+
 // Optimises `u` (by vertex index) in place; see `optimize_flattening()`.
-template <class Solver>
+// `callback(iterations, u)` is called after every iteration; it stops the
+// iteration by returning true.
+template <class Solver, class Callback = No_iteration_callback>
 Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<std::array<std::size_t, 3>>& tri,
                                              const std::vector<std::array<double, 3>>& p,
                                              const std::vector<std::array<std::size_t, 2>>& border_edges,
                                              const std::vector<double>& border_length,
                                              std::vector<std::array<double, 2>>& u, const Arap_options& opt,
-                                             const Solver& solver)
+                                             const Solver& solver, const Callback& callback = Callback())
 {
   const auto start = std::chrono::steady_clock::now();
   Optimization_result result;
@@ -188,6 +198,10 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
     }
     u.swap(next);
     ++result.iterations;
+    if(callback(result.iterations, u)) {
+      result.stopped_by_callback = true;
+      break;
+    }
     flip_free = flip_free || !arap.has_flip(u);
     const double e = arap.local_step(u);
     const bool small = energy - e <= opt.relative_decrease * energy;
@@ -233,6 +247,10 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///     area distortion. With alpha = 1 every target is area-preserving with J's own aspect ratio.
 ///   - `number_of_iterations`: at most this many iterations (default 30); the iteration also stops
 ///     when one lowers the energy by less than 1e-4 of itself
+///   - `CGAL_QD::parameters::iteration_callback`: a callable `bool(std::size_t)`, called with the number
+///     of iterations done after every iteration (with `LENGTH_PRESERVED`, of the free iteration, before
+///     the border is fitted), when `uv` holds the map of that iteration; returning `true` stops the
+///     iteration there (`Optimization_result::stopped_by_callback`). It may read `uv`, not write it.
 ///   - `CGAL_QD::parameters::sparse_solver`: as in `flatten_patch()`
 ///   - `vertex_point_map`, `vertex_index_map`
 /// \returns an `Optimization_result`: `EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
@@ -334,7 +352,19 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
   }
   const Arap_border mode = opt.border;
   if(mode == Arap_border::LENGTH_PRESERVED) opt.border = Arap_border::FREE;
-  result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver);
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::iteration_callback_t>::value) {
+    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver);
+  } else {
+    // the map of every iteration written to `uv` for the user's callback
+    const auto& user = get_parameter(np, internal_np::iteration_callback_t());
+    std::vector<vertex_descriptor> vertex_of(nv);
+    for(vertex_descriptor v : vertices(tm)) vertex_of[get(vim, v)] = v;
+    const auto callback = [&](std::size_t iterations, const std::vector<std::array<double, 2>>& map) {
+      for(std::size_t i = 0; i < nv; ++i) put(uv, vertex_of[i], Point_2(map[i][0], map[i][1]));
+      return bool(user(iterations));
+    };
+    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver, callback);
+  }
   if(!result) return result;
   if(mode == Arap_border::LENGTH_PRESERVED) {
     // the LPFB whose target angles are the angles of the free map

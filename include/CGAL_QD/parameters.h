@@ -39,6 +39,7 @@ struct arap_border_t {};
 struct border_edge_length_map_t {};
 struct border_length_weight_t {};
 struct area_preservation_t {};
+struct iteration_callback_t {};
 
 } // namespace internal_np
 
@@ -124,6 +125,10 @@ CGAL_QD_ADD_NAMED_PARAMETER(border_length_weight)
 /// Default: 0 in `optimize_flattening()`, 0.5 in the segmentation
 /// (`Chart_criterion::LPFB_IP_THEN_ARAP`).
 CGAL_QD_ADD_NAMED_PARAMETER(area_preservation)
+/// a callable `bool(std::size_t iterations)` that `optimize_flattening()`
+/// calls after every iteration, with the map of that iteration in its `uv`;
+/// returning `true` stops the iteration. Default: none.
+CGAL_QD_ADD_NAMED_PARAMETER(iteration_callback)
 /// the ratio of the longest to the shortest edge above which `inspect_mesh()`
 /// counts a triangle as a needle. Default: 1000.
 CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)
