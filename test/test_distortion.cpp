@@ -39,6 +39,20 @@ Uv_store<Mesh> map_uv(const Mesh& tm, const std::function<std::array<double, 2>(
 // a flat grid in the plane z = 0 over [0,2] x [0,1]
 Soup flat_grid() { return grid(10, 6, [](double u, double v) { return P3{2 * u, v, 0}; }); }
 
+// the flat grid with a slit from its border inwards along y = 0.5, to x = 1
+Soup flat_grid_with_slit()
+{
+  Soup s = flat_grid();
+  std::set<std::pair<std::size_t, std::size_t>> slit;
+  std::vector<std::size_t> on_line;
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+    if(std::abs(s.points[i][1] - 0.5) < 1e-12 && s.points[i][0] < 1.0 + 1e-12) on_line.push_back(i);
+  std::sort(on_line.begin(), on_line.end(), [&](std::size_t a, std::size_t b) { return s.points[a][0] < s.points[b][0]; });
+  for(std::size_t k = 0; k + 1 < on_line.size(); ++k) slit.insert({on_line[k], on_line[k + 1]});
+  BOOST_REQUIRE(slit.size() >= 4u);
+  return cut_open(s, slit);
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(identity_map, Mesh, Mesh_types)
@@ -164,17 +178,8 @@ BOOST_AUTO_TEST_CASE(overlap_without_flip_is_detected)
 
 BOOST_AUTO_TEST_CASE(sides_of_a_slit_touch_within_the_tolerance)
 {
-  // the flat grid with a slit from its border inwards along y = 0.5: the two
-  // sides of the slit lie on each other in the plane
-  Soup s = flat_grid();
-  std::set<std::pair<std::size_t, std::size_t>> slit;
-  std::vector<std::size_t> on_line;
-  for(std::size_t i = 0; i < s.points.size(); ++i)
-    if(std::abs(s.points[i][1] - 0.5) < 1e-12 && s.points[i][0] < 1.0 + 1e-12) on_line.push_back(i);
-  std::sort(on_line.begin(), on_line.end(), [&](std::size_t a, std::size_t b) { return s.points[a][0] < s.points[b][0]; });
-  for(std::size_t k = 0; k + 1 < on_line.size(); ++k) slit.insert({on_line[k], on_line[k + 1]});
-  BOOST_REQUIRE(slit.size() >= 4u);
-  const Surface_mesh tm = make<Surface_mesh>(cut_open(s, slit));
+  // the two sides of the slit lie on each other in the plane
+  const Surface_mesh tm = make<Surface_mesh>(flat_grid_with_slit());
   const auto uv = map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; });
   const auto exact = QD::compute_distortion(tm, uv.pmap_const());
   BOOST_TEST(exact.flipped_faces == 0u);
@@ -236,6 +241,91 @@ BOOST_AUTO_TEST_CASE(branch_vertex_is_detected)
   BOOST_TEST(r.flipped_faces == 0u);
   BOOST_TEST(r.branch_vertices == 1u);
   BOOST_TEST(r.overlap);
+}
+
+// The acceptance measures (no corner angles; branch vertices by the winding
+// of the 1-ring) decide as compute_distortion() does: the same areas, stretch,
+// flips, crossings and overlap, bit for bit
+template <class Mesh, class UV>
+void check_acceptance_measures(const Mesh& tm, const UV& uv, double tolerance)
+{
+  const auto np = QD::parameters::overlap_tolerance(tolerance);
+  const auto full = QD::compute_distortion(tm, uv, np);
+  const auto fast = QD::internal::acceptance_measures(tm, uv, np);
+  BOOST_TEST((fast.status == full.status));
+  BOOST_TEST(fast.number_of_faces == full.number_of_faces);
+  BOOST_TEST(fast.area_distortion == full.area_distortion);
+  BOOST_TEST(fast.local_area_distortion == full.local_area_distortion);
+  BOOST_TEST(fast.l2_stretch == full.l2_stretch);
+  BOOST_TEST(fast.linf_stretch == full.linf_stretch);
+  BOOST_TEST(fast.boundary_length_error == full.boundary_length_error);
+  BOOST_TEST(fast.flipped_faces == full.flipped_faces);
+  BOOST_TEST(fast.border_crossings.size() == full.border_crossings.size());
+  BOOST_TEST(fast.overlap == full.overlap);
+  BOOST_TEST(QD::has_global_overlap(tm, uv, np) == full.overlap);
+  if(full.flipped_faces == 0) BOOST_TEST(fast.branch_vertices == full.branch_vertices);
+  BOOST_TEST(fast.angle_distortion == 0.);
+  BOOST_TEST(fast.boundary_angle_error == 0.);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(acceptance_measures_decide_as_compute_distortion, Mesh, Mesh_types)
+{
+  // a fan whose layout turns `turns` times around its centre, starting at
+  // angle `start` (0: ring vertices on the ray the winding is counted on)
+  auto fan = [](std::size_t n, int turns, double start, std::size_t& checked) {
+    Soup s;
+    s.points.push_back({0, 0, 0});
+    for(std::size_t k = 0; k < n; ++k) s.points.push_back({std::cos(2 * pi * k / n), std::sin(2 * pi * k / n), 0});
+    for(std::size_t k = 0; k < n; ++k) s.triangles.push_back({0, 1 + k, 1 + (k + 1) % n});
+    const Mesh tm = make<Mesh>(s);
+    const auto uv = map_uv(tm, [&](const P3& p) {
+      if(p[0] == 0 && p[1] == 0) return std::array<double, 2>{0, 0};
+      const double a = turns * std::atan2(p[1], p[0]) + start;
+      return std::array<double, 2>{std::cos(a), std::sin(a)};
+    });
+    const auto full = QD::compute_distortion(tm, uv.pmap_const());
+    BOOST_TEST(full.branch_vertices == (turns > 1 ? 1u : 0u));
+    check_acceptance_measures(tm, uv.pmap_const(), 0.);
+    check_acceptance_measures(tm, uv.pmap_const(), 1e-9);
+    ++checked;
+  };
+  std::size_t checked = 0;
+  for(int turns = 1; turns <= 3; ++turns)
+    for(double start : {0., 0.1, -0.3}) fan(12, turns, start, checked);
+
+  // a curved, cut-open surface under its identity-like map, a wavy map, a
+  // map with one face folded over, a strip wound over itself
+  Soup cut = flat_grid_with_slit();
+  for(auto& p : cut.points) p[2] = 0.2 * std::sin(2 * p[0]) * p[1];
+  const Mesh tm = make<Mesh>(cut);
+  std::vector<Uv_store<Mesh>> maps;
+  maps.push_back(map_uv(tm, [](const P3& p) { return std::array<double, 2>{p[0], p[1]}; }));
+  maps.push_back(map_uv(tm, [](const P3& p) {
+    return std::array<double, 2>{p[0] + 0.05 * std::sin(7 * p[1]), 1.1 * p[1] + 0.03 * std::cos(5 * p[0])};
+  }));
+  maps.push_back(maps[0]);
+  {
+    // the interior vertex nearest (1.5, 0.3) pushed across its ring: faces flip
+    auto it = std::min_element(maps[2].map.begin(), maps[2].map.end(), [&](const auto& a, const auto& b) {
+      auto d = [](const auto& q) { return std::hypot(CGAL::to_double(q.x()) - 1.5, CGAL::to_double(q.y()) - 0.3); };
+      return d(a.second) < d(b.second);
+    });
+    it->second = typename Uv_store<Mesh>::Point_2(1.5, 0.55);
+  }
+  for(const auto& uv : maps) {
+    check_acceptance_measures(tm, uv.pmap_const(), 0.);
+    check_acceptance_measures(tm, uv.pmap_const(), 1e-9);
+    ++checked;
+  }
+  BOOST_TEST(QD::compute_distortion(tm, maps[2].pmap_const()).flipped_faces > 0u);
+  BOOST_TEST(!QD::compute_distortion(tm, maps[0].pmap_const(), QD::parameters::overlap_tolerance(1e-9)).overlap);
+  const Mesh strip = make<Mesh>(grid(60, 2, [](double u, double v) { return P3{u, 0.1 * v, 0}; }));
+  const auto wound = map_uv(strip, [](const P3& p) {
+    const double a = 2.5 * pi * p[0], r = 1.0 - p[1];
+    return std::array<double, 2>{r * std::cos(a), r * std::sin(a)};
+  });
+  check_acceptance_measures(strip, wound.pmap_const(), 1e-9);
+  BOOST_TEST(checked == 12u);
 }
 
 BOOST_AUTO_TEST_CASE(curved_surface_measures)

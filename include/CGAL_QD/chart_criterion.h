@@ -18,6 +18,7 @@
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/flattening_cache.h>
+#include <CGAL_QD/internal/hopeless_trial.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
@@ -343,9 +344,9 @@ private:
       } else {
         // a trial gives up where its A_loc is too far above the bound to come
         // below it by iteration 30
-        const Hopeless_test hopeless(sm, m_thresholds, 30);
+        const Hopeless_trial<Mesh> hopeless(sm, m_thresholds.max_local_area_distortion, 30);
         o = optimize_flattening(sm, opt, parameters::iteration_callback([&](std::size_t iterations) {
-          return hopeless(sm, opt, iterations);
+          return hopeless(opt, iterations);
         }, trial_parameters()));
         if(o.stopped_by_callback) return rep;  // rejected
       }
@@ -402,57 +403,6 @@ private:
     return rep;
   }
 
-  // Whether a trial's optimisation has no hope of acceptance: looked at
-  // every 5 iterations, A_loc (computed as `compute_distortion()` computes
-  // it) falls as the iteration goes on, more slowly as it converges; a map
-  // whose A_loc is above (cap / iterations)^0.6 times the bound after
-  // `iterations` of at most `cap` iterations is hopeless. Measured on 6170
-  // trials of six of CGAL's meshes (30 iterations, A_loc looked at every 5):
-  // this factor (2.93, 1.93, 1.52, 1.28, 1.12 at 5 to 25 iterations) stops
-  // 2077 trials early, none of which would have been accepted at iteration 30.
-  class Hopeless_test
-  {
-  public:
-    Hopeless_test(const Mesh& sm, const Merge_thresholds& t, std::size_t cap) : m_cap(cap)
-    {
-      m_area.reserve(sm.number_of_faces());
-      for(auto f : faces(sm)) {
-        const auto h = halfedge(f, sm);
-        m_area.push_back(0.5 * double_area3(point(sm, source(h, sm)), point(sm, target(h, sm)),
-                                            point(sm, target(next(h, sm), sm))));
-        m_total += m_area.back();
-      }
-      m_max_local = 100. * t.max_local_area_distortion;
-    }
-
-    template <class UVMap>
-    bool operator()(const Mesh& sm, const UVMap& uv, std::size_t iterations) const
-    {
-      if(iterations % 5 != 0 || iterations >= m_cap || !(m_total > 0)) return false;
-      double local = 0;
-      std::size_t i = 0;
-      for(auto f : faces(sm)) {
-        const auto h = halfedge(f, sm);
-        const auto &a = get(uv, source(h, sm)), &b = get(uv, target(h, sm)), &c = get(uv, target(next(h, sm), sm));
-        const double a2 = 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
-        local += std::abs(std::abs(a2) - m_area[i++]);
-      }
-      return local / m_total * 100. > m_max_local * std::pow(double(m_cap) / double(iterations), 0.6);
-    }
-
-  private:
-    static std::array<double, 3> point(const Mesh& sm, typename Mesh::Vertex_index v)
-    {
-      const K::Point_3& p = sm.point(v);
-      return {p.x(), p.y(), p.z()};
-    }
-
-    std::size_t m_cap;
-    std::vector<double> m_area;  // 3D area by face
-    double m_total = 0;
-    double m_max_local = 0;  // in percent
-  };
-
   // a face-index buffer of the mesh's size, all -1, taken from the
   // evaluator's pool for one trial and given back (all -1 again) after it
   class Scratch_buffer
@@ -500,7 +450,7 @@ private:
   bool measure(const Mesh& sm, const UVMap& uv, Chart_report& rep) const
   {
     const Distortion_report<Mesh> d =
-        compute_distortion(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
+        acceptance_measures(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
     if(!d) {
       rep.status = d.status;
       rep.accepted = false;

@@ -11,6 +11,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/uv_overlap.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -78,39 +79,14 @@ namespace internal {
 struct Distortion_options
 {
   bool border_crossings = true;
+  // false: no corner angles (`angle_distortion`, `boundary_angle_error` stay
+  // 0), and branch vertices counted only where no face is flipped (the map
+  // overlaps anyway otherwise); the other measures and `overlap` are the same
+  bool angle_measures = true;
   // border edges that come closer than this, relative to the diagonal of the
   // UV bounding box of the border, touch rather than cross (0: exact tests)
   double overlap_tolerance = 0;
 };
-
-// The signed distance of r from the line through p and q (positive on the left).
-inline double signed_distance(const std::array<double, 2>& p, const std::array<double, 2>& q,
-                              const std::array<double, 2>& r)
-{
-  const double dx = q[0] - p[0], dy = q[1] - p[1], l = std::hypot(dx, dy);
-  if(!(l > 0)) return std::hypot(r[0] - p[0], r[1] - p[1]);
-  return (dx * (r[1] - p[1]) - dy * (r[0] - p[0])) / l;
-}
-
-// Whether segments ab and cd cross by more than delta: each has its endpoints
-// strictly on either side of the other's line, further than delta. Segments
-// that merely touch within delta (an endpoint on the other segment, two
-// coincident sides of a slit) do not cross.
-inline bool cross_beyond(const std::array<double, 2>& a, const std::array<double, 2>& b,
-                         const std::array<double, 2>& c, const std::array<double, 2>& d, double delta)
-{
-  const double c1 = signed_distance(a, b, c), d1 = signed_distance(a, b, d);
-  const double a1 = signed_distance(c, d, a), b1 = signed_distance(c, d, b);
-  return ((c1 > delta && d1 < -delta) || (c1 < -delta && d1 > delta)) &&
-         ((a1 > delta && b1 < -delta) || (a1 < -delta && b1 > delta));
-}
-
-template <class UVMap, class V>
-std::array<double, 2> uv_of(const UVMap& uv, const V& v)
-{
-  const auto& p = get(uv, v);
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
-}
 
 inline double angle_between(const double* u, const double* w, int dim)
 {
@@ -124,51 +100,6 @@ inline double angle_between(const double* u, const double* w, int dim)
     c = std::sqrt(x * x + y * y + z * z);
   }
   return std::atan2(c, dot);
-}
-
-// Whether a face around one of the vertices `a` overlaps a face around one of
-// the vertices `b` in 2D, beyond touching: both faces are shrunk toward their
-// centroids by a relative 1e-6 and then tested exactly.
-template <class TriangleMesh, class VertexUVMap>
-bool fans_overlap(const TriangleMesh& tm, const VertexUVMap& uv,
-                  const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 2>& a,
-                  const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 2>& b)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
-  auto fan = [&](const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 2>& vs) {
-    std::vector<face_descriptor> fs;
-    for(auto v : vs)
-      for(face_descriptor f : CGAL::faces_around_target(halfedge(v, tm), tm))
-        if(f != boost::graph_traits<TriangleMesh>::null_face() && std::find(fs.begin(), fs.end(), f) == fs.end())
-          fs.push_back(f);
-    return fs;
-  };
-  auto shrunk = [&](face_descriptor f) {
-    std::array<std::array<double, 2>, 3> q;
-    int k = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) q[k++] = uv_of(uv, v);
-    const double cx = (q[0][0] + q[1][0] + q[2][0]) / 3, cy = (q[0][1] + q[1][1] + q[2][1]) / 3;
-    const double t = 1e-6;
-    return EK::Triangle_2(EK::Point_2(q[0][0] + t * (cx - q[0][0]), q[0][1] + t * (cy - q[0][1])),
-                          EK::Point_2(q[1][0] + t * (cx - q[1][0]), q[1][1] + t * (cy - q[1][1])),
-                          EK::Point_2(q[2][0] + t * (cx - q[2][0]), q[2][1] + t * (cy - q[2][1])));
-  };
-  // a zero-area image is a fold: it is not a clean touch (and CGAL's
-  // triangle intersection test requires non-degenerate triangles)
-  const std::vector<face_descriptor> fa = fan(a), fb = fan(b);
-  std::vector<EK::Triangle_2> tb;
-  for(face_descriptor g : fb) {
-    tb.push_back(shrunk(g));
-    if(tb.back().is_degenerate()) return true;
-  }
-  for(face_descriptor f : fa) {
-    const EK::Triangle_2 tf = shrunk(f);
-    if(tf.is_degenerate()) return true;
-    for(std::size_t k = 0; k < fb.size(); ++k)
-      if(f != fb[k] && CGAL::do_intersect(tf, tb[k])) return true;
-  }
-  return false;
 }
 
 template <class TriangleMesh, class VertexUVMap, class VPM, class VIM>
@@ -201,7 +132,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
   }
 
   const std::size_t nv = num_vertices(tm);
-  std::vector<double> angle_sum_2d(nv, 0.), angle_sum_3d(nv, 0.);
+  std::vector<double> angle_sum_2d(opt.angle_measures ? nv : 0, 0.), angle_sum_3d(opt.angle_measures ? nv : 0, 0.);
   double stretch2 = 0, angle_error = 0, local_area_error = 0;
   std::size_t corners = 0;
   bool infinite_stretch = false;
@@ -239,7 +170,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
       rep.linf_stretch = (std::max)(rep.linf_stretch, big);
     }
 
-    for(int k = 0; k < 3; ++k) {
+    for(int k = 0; k < 3 && opt.angle_measures; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
       const double u3[3] = {q[i][0] - q[k][0], q[i][1] - q[k][1], q[i][2] - q[k][2]};
       const double w3[3] = {q[j][0] - q[k][0], q[j][1] - q[k][1], q[j][2] - q[k][2]};
@@ -260,7 +191,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
     rep.l2_stretch = std::sqrt(stretch2 / rep.area_3d);
     rep.l2_stretch_normalized = rep.l2_stretch * std::sqrt(rep.area_2d / rep.area_3d);
   }
-  rep.angle_distortion = angle_error / corners;
+  if(corners > 0) rep.angle_distortion = angle_error / corners;
 
   // border loops: Pi_L, Pi_theta; interior vertices: branch points
   std::vector<halfedge_descriptor> border;
@@ -270,11 +201,42 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
       border.push_back(h);
       on_border[get(vim, target(h, tm))] = 1;
     }
-  for(vertex_descriptor v : vertices(tm)) {
-    const std::size_t i = get(vim, v);
-    if(halfedge(v, tm) != GT::null_halfedge() && !on_border[i] && angle_sum_2d[i] > 3 * pi)
-      ++rep.branch_vertices;
+  if(opt.angle_measures) {
+    for(vertex_descriptor v : vertices(tm)) {
+      const std::size_t i = get(vim, v);
+      if(halfedge(v, tm) != GT::null_halfedge() && !on_border[i] && angle_sum_2d[i] > 3 * pi)
+        ++rep.branch_vertices;
+    }
+  } else if(rep.flipped_faces == 0) {
+    // every face is positively oriented (exactly): the 1-ring of an interior
+    // vertex v turns around it counterclockwise, each face by less than a
+    // half-turn, so it crosses the ray from v towards +x only upwards, and the
+    // crossings count the turns (the angle sum above is 2 pi per turn)
+    for(vertex_descriptor v : vertices(tm)) {
+      if(halfedge(v, tm) == GT::null_halfedge() || on_border[get(vim, v)]) continue;
+      const double y = uv_of(uv, v)[1];
+      std::size_t turns = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, tm), tm)) {
+        // the face of h is (a, v, c): its side of the 1-ring runs from c to a
+        const double ya = uv_of(uv, source(h, tm))[1], yc = uv_of(uv, target(next(h, tm), tm))[1];
+        if(yc <= y && y < ya) ++turns;
+      }
+      if(turns > 1) ++rep.branch_vertices;
+    }
   }
+  // the 2D angle sum at a vertex: from the corner loop, or summed over its
+  // faces where the loop was skipped
+  auto angle_sum_2d_at = [&](vertex_descriptor v) {
+    if(opt.angle_measures) return angle_sum_2d[get(vim, v)];
+    double sum = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, tm), tm)) {
+      if(is_border(h, tm)) continue;
+      const auto s0 = uv_of(uv, v), s1 = uv_of(uv, target(next(h, tm), tm)), s2 = uv_of(uv, source(h, tm));
+      const double u2[2] = {s1[0] - s0[0], s1[1] - s0[1]}, w2[2] = {s2[0] - s0[0], s2[1] - s0[1]};
+      sum += angle_between(u2, w2, 2);
+    }
+    return sum;
+  };
   double length_error = 0, theta_error = 0;
   for(halfedge_descriptor b : border) {
     // b runs with the outside on its left; the surface-side order is reversed
@@ -283,6 +245,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
     length_error += std::abs(std::hypot(s1[0] - s0[0], s1[1] - s0[1]) -
                              distance3(point_of<TriangleMesh>(source(b, tm), vpm),
                                        point_of<TriangleMesh>(target(b, tm), vpm)));
+    if(!opt.angle_measures) continue;
     // inner angle at target(b) on the surface side, walking s2 -> s1 -> s0
     const double ux = s2[0] - s1[0], uy = s2[1] - s1[1], wx = s0[0] - s1[0], wy = s0[1] - s1[1];
     double theta = std::atan2(wx * uy - wy * ux, wx * ux + wy * uy);
@@ -330,7 +293,7 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
           const std::array<double, 2> cc = {c.x(), c.y()}, pp = {p.x(), p.y()}, qq = {q.x(), q.y()};
           const double along = (pp[0] - cc[0]) * (qq[0] - cc[0]) + (pp[1] - cc[1]) * (qq[1] - cc[1]);
           crossing = along > 0 && std::abs(signed_distance(cc, pp, qq)) <= delta &&
-                     std::hypot(pp[0] - qq[0], pp[1] - qq[1]) > delta && angle_sum_2d[get(vim, shared)] > pi;
+                     std::hypot(pp[0] - qq[0], pp[1] - qq[1]) > delta && angle_sum_2d_at(shared) > pi;
         } else {
           crossing = CGAL::collinear(c, p, q) && !CGAL::collinear_are_ordered_along_line(p, c, q);
         }
@@ -352,6 +315,48 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
   return rep;
 }
 
+// `compute_distortion()` with the options `opt` (its overlap tolerance taken
+// from `np`)
+template <class TriangleMesh, class VertexUVMap, class NamedParameters>
+Distortion_report<TriangleMesh> compute_distortion_with(const TriangleMesh& tm, const VertexUVMap& uv,
+                                                        const NamedParameters& np, Distortion_options opt)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  opt.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), 0.);
+  // coordinates beyond [2^-64, 2^64] (3D or UV) are measured scaled by a power
+  // of two, which is exact (internal/point_scale.h)
+  double largest = largest_coordinate(vertices(tm), input_vpm);
+  for(const auto v : vertices(tm)) {
+    const auto q = uv_of(uv, v);
+    largest = (std::max)(largest, (std::max)(std::abs(q[0]), std::abs(q[1])));
+  }
+  const double scale = normalizing_scale(largest);
+  const Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
+  const Scaled_uv_map<VertexUVMap> scaled_uv{uv, 1. / scale};  // reads uv * scale
+  Distortion_report<TriangleMesh> rep = compute_distortion_impl(tm, scaled_uv, vpm, vim, opt);
+  rep.area_3d /= scale * scale;
+  rep.area_2d /= scale * scale;
+  rep.boundary_length_error /= scale;
+  return rep;
+}
+
+// The measures that decide whether a chart's flattening is accepted: A(Omega),
+// L2, A_loc, the flipped faces and `overlap`, the same as `compute_distortion()`
+// gives, without the corner angles (`angle_distortion` and
+// `boundary_angle_error` are 0; `branch_vertices` is 0 where a face is flipped).
+template <class TriangleMesh, class VertexUVMap, class NamedParameters>
+Distortion_report<TriangleMesh> acceptance_measures(const TriangleMesh& tm, const VertexUVMap& uv,
+                                                    const NamedParameters& np)
+{
+  Distortion_options opt;
+  opt.angle_measures = false;
+  return compute_distortion_with(tm, uv, np, opt);
+}
+
 } // namespace internal
 
 /// \ingroup PkgCGAL_QDRef
@@ -360,8 +365,6 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 /// (`CGAL::box_self_intersection_d` and exact predicates; the paper rasterises
 /// on a GPU instead).
 ///
-/// \param tm the triangle mesh
-/// \param uv the UV of every vertex
 /// A locally injective, orientation-preserving map whose border polygons are
 /// simple and disjoint is globally one-to-one; so `overlap` (S(Omega)) is set
 /// when a face is flipped, an interior vertex is a branch point (its 1-ring
@@ -369,6 +372,8 @@ Distortion_report<TriangleMesh> compute_distortion_impl(const TriangleMesh& tm, 
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from vertices to a 2D point type
+/// \param tm the triangle mesh
+/// \param uv the UV of every vertex
 /// \param np optional: `vertex_point_map`, `vertex_index_map`, and
 ///   `CGAL_QD::parameters::overlap_tolerance`: border edges closer than this
 ///   fraction of the diagonal of the border's UV bounding box touch rather than
@@ -386,43 +391,18 @@ template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::p
 Distortion_report<TriangleMesh> compute_distortion(const TriangleMesh& tm, const VertexUVMap& uv,
                                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                          get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  internal::Distortion_options opt;
-  opt.overlap_tolerance = choose_parameter(get_parameter(np, internal_np::overlap_tolerance_t()), 0.);
-  // coordinates beyond [2^-64, 2^64] (3D or UV) are measured scaled by a power
-  // of two, which is exact (internal/point_scale.h)
-  double largest = internal::largest_coordinate(vertices(tm), input_vpm);
-  for(const auto v : vertices(tm)) {
-    const auto q = internal::uv_of(uv, v);
-    largest = (std::max)(largest, (std::max)(std::abs(q[0]), std::abs(q[1])));
-  }
-  const double scale = internal::normalizing_scale(largest);
-  const internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
-  const internal::Scaled_uv_map<VertexUVMap> scaled_uv{uv, 1. / scale};  // reads uv * scale
-  Distortion_report<TriangleMesh> rep = internal::compute_distortion_impl(tm, scaled_uv, vpm, vim, opt);
-  rep.area_3d /= scale * scale;
-  rep.area_2d /= scale * scale;
-  rep.boundary_length_error /= scale;
-  return rep;
+  return internal::compute_distortion_with(tm, uv, np, internal::Distortion_options());
 }
 
 namespace internal {
+// the measures of the faces alone, without the border crossings
 template <class TriangleMesh, class VertexUVMap, class NamedParameters>
 Distortion_report<TriangleMesh> face_measures(const TriangleMesh& tm, const VertexUVMap& uv,
                                               const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   Distortion_options opt;
   opt.border_crossings = false;
-  return compute_distortion_impl(tm, uv, vpm, vim, opt);
+  return compute_distortion_with(tm, uv, np, opt);
 }
 } // namespace internal
 
@@ -430,10 +410,10 @@ Distortion_report<TriangleMesh> face_measures(const TriangleMesh& tm, const Vert
 /// applies to `uv` the similarity (uniform scale about one of its points, no
 /// rotation) that puts the endpoints of the longest border edge at their 3D
 /// distance: the normalisation the paper applies to free-border methods before
-/// \param tm the triangle mesh
-/// \param uv the UV of every vertex
 /// measuring them. Does nothing if `tm` has no border or that edge has zero
 /// length in `uv`.
+/// \param tm the triangle mesh
+/// \param uv the UV of every vertex
 /// \param np optional: `vertex_point_map`
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void normalize_by_longest_border_edge(const TriangleMesh& tm, VertexUVMap uv,
@@ -519,7 +499,7 @@ template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::p
 bool has_global_overlap(const TriangleMesh& tm, const VertexUVMap& uv,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const auto r = compute_distortion(tm, uv, np);
+  const auto r = internal::acceptance_measures(tm, uv, np);  // the same `overlap`, no corner angles
   return !r || r.overlap;
 }
 
