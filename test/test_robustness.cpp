@@ -597,6 +597,12 @@ BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
       BOOST_REQUIRE(d.status == QD::Error_code::OK);
       BOOST_TEST(close(d.area_distortion, d0.area_distortion, 1e-6));
       BOOST_TEST(close(d.l2_stretch, d0.l2_stretch, 1e-6));
+      // the functions that return one measure scale the same way
+      BOOST_TEST(close(QD::area_distortion(m, uv.pmap_const()), d0.area_distortion, 1e-6));
+      BOOST_TEST(close(QD::local_area_distortion(m, uv.pmap_const()), d0.local_area_distortion, 1e-6));
+      BOOST_TEST(close(QD::l2_stretch(m, uv.pmap_const()), d0.l2_stretch, 1e-6));
+      BOOST_TEST(QD::number_of_flipped_faces(m, uv.pmap_const()) == 0u);
+      BOOST_TEST(!QD::has_global_overlap(m, uv.pmap_const()));
 
       // functions without the scaling refuse such coordinates by name
       Uv_store<Surface_mesh> border;
