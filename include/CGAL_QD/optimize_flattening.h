@@ -16,6 +16,7 @@
 #include <CGAL_QD/flatten_patch.h>
 #include <CGAL_QD/length_preserved_free_boundary.h>
 #include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/anderson_acceleration.h>
 #include <CGAL_QD/internal/arap_optimizer.h>
 #include <CGAL_QD/internal/validation.h>
 
@@ -30,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace CGAL_QD {
@@ -137,6 +139,8 @@ struct Arap_options
   // stop when an iteration lowers the energy by less than this fraction
   double relative_decrease = 1e-4;
   double area_preservation = 0.;  // see Arap_optimizer
+  // the history of the Anderson acceleration (0: plain iteration)
+  std::size_t anderson_window = 0;
 };
 
 // no callback: the iteration never stops early
@@ -176,14 +180,22 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
   result.energy_before = result.energy_after = energy;
   result.input_flipped = arap.has_flip(u);
   bool flip_free = !result.input_flipped;
-  std::vector<std::array<double, 2>> next, trial;
+  std::vector<std::array<double, 2>> next, trial, accelerated;
+  std::unique_ptr<Anderson_acceleration> anderson;
+  if(opt.anderson_window > 0 && nv > 0)
+    anderson.reset(new Anderson_acceleration(Eigen::Index(2 * nv), Eigen::Index(opt.anderson_window)));
+  const auto as_vector = [nv](std::vector<std::array<double, 2>>& x) {
+    return Eigen::Map<Eigen::VectorXd>(x.front().data(), Eigen::Index(2 * nv));
+  };
   for(std::size_t it = 0; it < opt.iterations; ++it) {
     if(!arap.global_step(u, next)) {
       result.status = Error_code::SOLVER_FAILED;
       break;
     }
+    bool shortened = false;
     // once the map is flip-free, a step that would flip a face is shortened
     if(flip_free && arap.has_flip(next)) {
+      shortened = true;
       double t = 0.5;
       bool found = false;
       for(int k = 0; k < 10 && !found; ++k, t *= 0.5) {
@@ -196,6 +208,31 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
       if(!found) break;
       next.swap(trial);
     }
+    // once the map is flip-free, the accelerated point replaces the plain
+    // step where it keeps the map flip-free and has a lower energy; otherwise
+    // the history starts again (a map with flipped faces unfolds by plain
+    // steps: accelerated, it may settle with its folds)
+    bool have_energy = false;
+    double e = 0;
+    if(anderson && flip_free) {
+      accelerated.resize(nv);
+      auto out = as_vector(accelerated);
+      if(shortened) {
+        anderson->reset();  // a shortened step is no image of the map
+      } else if(anderson->compute(as_vector(u), as_vector(next), out)) {
+        if(out.allFinite() && !arap.has_flip(accelerated)) {
+          e = arap.local_step(accelerated);
+          if(e < energy) {
+            next.swap(accelerated);
+            have_energy = true;
+          } else {
+            anderson->reset();
+          }
+        } else {
+          anderson->reset();
+        }
+      }
+    }
     u.swap(next);
     ++result.iterations;
     if(callback(result.iterations, u)) {
@@ -203,7 +240,7 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
       break;
     }
     flip_free = flip_free || !arap.has_flip(u);
-    const double e = arap.local_step(u);
+    if(!have_energy) e = arap.local_step(u);
     const bool small = energy - e <= opt.relative_decrease * energy;
     energy = e;
     if(small) break;
@@ -247,6 +284,11 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///     area distortion. With alpha = 1 every target is area-preserving with J's own aspect ratio.
 ///   - `number_of_iterations`: at most this many iterations (default 30); the iteration also stops
 ///     when one lowers the energy by less than 1e-4 of itself
+///   - `CGAL_QD::parameters::anderson_acceleration`: a number m in [0, 100] (default 0). With m > 0, each
+///     iteration combines the last m + 1 iterates and their images (Anderson acceleration; Walker and Ni
+///     2011, Peng et al. 2018) and takes the combination where it keeps the map flip-free and lowers the
+///     energy, the plain step otherwise (the history then starts again): the same fixed point in fewer
+///     iterations, each a little dearer (m vectors of the size of the map)
 ///   - `CGAL_QD::parameters::iteration_callback`: a callable `bool(std::size_t)`, called with the number
 ///     of iterations done after every iteration (with `LENGTH_PRESERVED`, of the free iteration, before
 ///     the border is fitted), when `uv` holds the map of that iteration; returning `true` stops the
@@ -257,7 +299,8 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///          `INVALID_COORDINATES` (a non-finite point or UV), `COORDINATES_OUT_OF_RANGE` (a
 ///          |coordinate| of a point or UV beyond [2^-64, 2^64]), `DEGENERATE_FACE`,
 ///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite),
-///          `INVALID_ARGUMENT` (an `area_preservation` outside [0, 1]) on invalid input, `SOLVER_FAILED` if the system could not
+///          `INVALID_ARGUMENT` (an `area_preservation` outside [0, 1], an `anderson_acceleration` outside
+///          [0, 100]) on invalid input, `SOLVER_FAILED` if the system could not
 ///          be solved; in those cases nothing is written.
 /// \sa `flatten_patch()`
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -285,6 +328,12 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), opt.border_length_weight);
   opt.area_preservation =
       choose_parameter(get_parameter(np, internal_np::area_preservation_t()), opt.area_preservation);
+  const double window = double(choose_parameter(get_parameter(np, internal_np::anderson_acceleration_t()), 0));
+  if(!(window >= 0 && window <= 100)) {
+    result.status = Error_code::INVALID_ARGUMENT;
+    return result;
+  }
+  opt.anderson_window = static_cast<std::size_t>(window);
   if(!(opt.area_preservation >= 0 && opt.area_preservation <= 1)) {
     result.status = Error_code::INVALID_ARGUMENT;
     return result;

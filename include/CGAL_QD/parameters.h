@@ -40,6 +40,7 @@ struct border_edge_length_map_t {};
 struct border_length_weight_t {};
 struct area_preservation_t {};
 struct iteration_callback_t {};
+struct anderson_acceleration_t {};
 
 } // namespace internal_np
 
@@ -129,6 +130,13 @@ CGAL_QD_ADD_NAMED_PARAMETER(area_preservation)
 /// calls after every iteration, with the map of that iteration in its `uv`;
 /// returning `true` stops the iteration. Default: none.
 CGAL_QD_ADD_NAMED_PARAMETER(iteration_callback)
+/// the number of earlier iterates that the Anderson acceleration of
+/// `optimize_flattening()` combines (a `std::size_t`; 0: the plain local/global
+/// iteration). Default: 0. The segmentation does not use it: its trials stop
+/// after at most 30 iterations, and the fixed point that the acceleration
+/// reaches sooner can overlap itself where the map of the 30th plain iteration
+/// does not.
+CGAL_QD_ADD_NAMED_PARAMETER(anderson_acceleration)
 /// the ratio of the longest to the shortest edge above which `inspect_mesh()`
 /// counts a triangle as a needle. Default: 1000.
 CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)
