@@ -235,8 +235,10 @@ int main(int argc, char** argv)
                                   QP::merge_charts(
                                       o.merge,
                                       QP::merge_order(segment_mesh::merge_order(o),
-                                                      CGAL::parameters::verbose(o.verbose).callback(
-                                                          std::function<void(const char*, double)>(progress)))))))))))));
+                                                      QP::compactness_ratio(
+                                                          o.compactness_ratio,
+                                                          CGAL::parameters::verbose(o.verbose).callback(
+                                                              std::function<void(const char*, double)>(progress))))))))))))));
   CGAL_QD::Segmentation_result<Mesh> r =
       o.sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                    : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);

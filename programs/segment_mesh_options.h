@@ -44,6 +44,7 @@ struct Options
   std::string criterion = "lpfb-ip-arap";
   std::string arap_border = "free";
   std::string merge_order = "smallest";
+  double compactness_ratio = 0.6;
   bool denoise = false, refine = true, merge = true, smooth_seams = true, sequential = false;
   // the output
   bool json = false, verbose = false, quiet = false;
@@ -196,6 +197,13 @@ inline void add_options(CLI::App& app, Options& o)
                  "Which border the merging tries first: smallest (the two smallest charts), largest (the "
                  "paper's), relative (the longest border for its charts' size), compact (the roundest result)")
       ->check(CLI::IsMember({"smallest", "largest", "relative", "compact"}))
+      ->group(segmentation);
+  app.add_option("--compactness-ratio", o.compactness_ratio,
+                 "Try to join two charts only where the joined piece keeps at least RHO of the compactness "
+                 "(4 pi area / perimeter^2) of the less compact of the two: rounder pieces rather than sprawling "
+                 "ones; 0 tries every join (the paper's merging)")
+      ->type_name("RHO")
+      ->check(fraction)
       ->group(segmentation);
   app.add_flag("--denoise,!--no-denoise", o.denoise, "Denoise the chart borders (step 3; off by default)")
       ->group(segmentation);

@@ -535,6 +535,75 @@ BOOST_AUTO_TEST_CASE(tube_merges_into_very_few_charts)
   expect_valid_charts(tm, chart, r.number_of_charts);
 }
 
+BOOST_AUTO_TEST_CASE(compactness_ratio_keeps_a_sprawling_join_in_two_pieces)
+{
+  // two flat strips of unit cells (each cell in 8 triangles), 9 x 1 along x
+  // from x = 1 and 1 x 10 along y, that meet along one unit edge: their
+  // union, an L, flattens exactly but sprawls. Compactness 4 pi A / P^2: the
+  // strips 4 pi 9 / 20^2 = 0.283 and 4 pi 10 / 22^2 = 0.260, the L 4 pi 19 /
+  // 40^2 = 0.149, 0.575 times the less compact strip
+  Soup s;
+  std::map<std::pair<int, int>, std::size_t> index;  // lattice points in half units
+  auto point = [&](int i, int j) {
+    const auto it = index.find({i, j});
+    if(it != index.end()) return it->second;
+    s.points.push_back({0.5 * i, 0.5 * j, 0.});
+    return index[{i, j}] = s.points.size() - 1;
+  };
+  std::vector<std::pair<int, int>> cells;
+  for(int x = 1; x < 10; ++x) cells.push_back({x, 0});
+  for(int y = 0; y < 10; ++y) cells.push_back({0, y});
+  for(const auto& c : cells)
+    for(int a = 0; a < 2; ++a)
+      for(int b = 0; b < 2; ++b) {
+        const int i = 2 * c.first + a, j = 2 * c.second + b;
+        s.triangles.push_back({point(i, j), point(i + 1, j), point(i + 1, j + 1)});
+        s.triangles.push_back({point(i, j), point(i + 1, j + 1), point(i, j + 1)});
+      }
+  const Surface_mesh tm = make<Surface_mesh>(s);
+  Chart_map<Surface_mesh> strips;
+  for(auto f : faces(tm)) {
+    const auto c = centroid(tm, f);
+    strips[f] = c[0] > 1 ? 0 : 1;
+  }
+  auto merged = [&](const double* ratio) {
+    Chart_map<Surface_mesh> chart = strips;
+    const auto r = ratio ? QD::merge_charts_by_boundaries<CGAL::Sequential_tag>(
+                               tm, boost::make_assoc_property_map(chart), QD::parameters::compactness_ratio(*ratio))
+                         : QD::merge_charts_by_boundaries<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(chart));
+    BOOST_REQUIRE_MESSAGE(r, QD::error_message(r.status));
+    BOOST_TEST(r.charts_before == 2u);
+    expect_valid_charts(tm, chart, r.number_of_charts);
+    return r;
+  };
+  const double zero = 0, half = 0.5, limit = 0.57, above = 0.58, strict = 0.9;
+  // the paper's merging and ratios up to 0.575: one piece, after one trial
+  for(const double* ratio : {&zero, &half, &limit}) {
+    const auto r = merged(ratio);
+    BOOST_TEST(r.number_of_charts == 1u);
+    BOOST_TEST(r.trials == 1u);
+  }
+  // the default (0.6) and ratios above 0.575: two pieces, without a trial
+  for(const double* ratio : {static_cast<const double*>(nullptr), &above, &strict}) {
+    const auto r = merged(ratio);
+    BOOST_TEST(r.number_of_charts == 2u);
+    BOOST_TEST(r.trials == 0u);
+  }
+  // outside [0, 1]: INVALID_ARGUMENT, nothing written
+  for(const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    Chart_map<Surface_mesh> chart = strips;
+    BOOST_TEST((QD::merge_charts_by_boundaries(tm, boost::make_assoc_property_map(chart),
+                                               QD::parameters::compactness_ratio(bad))
+                    .status == QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST((chart == strips));
+    Chart_map<Surface_mesh> untouched;
+    BOOST_TEST((QD::segment_quasi_developable(tm, boost::make_assoc_property_map(untouched),
+                                              QD::parameters::compactness_ratio(bad))
+                    .status == QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST(untouched.empty());
+  }
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(cube_unfolds_into_few_charts, Mesh, Mesh_types)
 {
   const Mesh tm = make<Mesh>(closed_cube(4));

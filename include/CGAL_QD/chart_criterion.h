@@ -114,6 +114,10 @@ struct Merge_thresholds
   // the two sides of a cut inside a developable chart develop onto each other:
   // they touch, which is not an overlap
   double overlap_tolerance = 1e-9;
+  // the merging tries a curve only where the merged chart keeps this share of
+  // the compactness of the less compact of its two charts (see
+  // `CGAL_QD::parameters::compactness_ratio`)
+  double compactness_ratio = 0.6;
 };
 
 // Flattens a set of faces of `tm` cut open along the cut edges, by LPFB+IP,
@@ -502,13 +506,14 @@ Merge_thresholds merge_thresholds_from(const NamedParameters& np)
   t.border_length_weight =
       choose_parameter(get_parameter(np, internal_np::border_length_weight_t()), t.border_length_weight);
   t.area_preservation = choose_parameter(get_parameter(np, internal_np::area_preservation_t()), t.area_preservation);
+  t.compactness_ratio = choose_parameter(get_parameter(np, internal_np::compactness_ratio_t()), t.compactness_ratio);
   return t;
 }
 
 // whether the parameters that the library does not clamp are in their ranges
 inline bool thresholds_valid(const Merge_thresholds& t)
 {
-  return t.area_preservation >= 0 && t.area_preservation <= 1;
+  return t.area_preservation >= 0 && t.area_preservation <= 1 && t.compactness_ratio >= 0 && t.compactness_ratio <= 1;
 }
 
 } // namespace internal

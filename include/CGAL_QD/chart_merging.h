@@ -196,6 +196,7 @@ public:
   std::size_t number_of_curves() const { return m_curves.size(); }
 
   void set_order(Merge_order order) { m_order = order; }
+  void set_compactness_ratio(double ratio) { m_compactness_ratio = ratio; }
 
   // The greedy merging of the paper, Section 4.2. Returns (trials, merges).
   template <class ConcurrencyTag>
@@ -254,6 +255,15 @@ public:
         heap.pop();
         const std::size_t c = static_cast<std::size_t>(-std::get<1>(e));
         if(std::get<2>(e) != stamp[c] || !m_curves[c].active || m_curves[c].eliminated) continue;
+        if(!compact_enough(c)) {
+          // no trial: tried again if one of its charts changes
+          if(verbose)
+            std::cerr << "  curve " << c << " between charts " << find(m_curves[c].a) << " and "
+                      << find(m_curves[c].b) << ": kept (the merged chart would sprawl)\n";
+          m_curves[c].active = false;
+          ++decided;
+          continue;
+        }
         take.push_back(c);
       }
       std::vector<std::size_t> to_evaluate;
@@ -356,6 +366,25 @@ private:
     }
   }
 
+  // compactness 4 pi A / P^2 of a chart of area `area` and perimeter `perimeter` (1 without perimeter)
+  static double compactness(double area, double perimeter)
+  {
+    return perimeter > 0 ? 4 * 3.14159265358979323846 * area / (perimeter * perimeter) : 1.;
+  }
+
+  // whether removing curve `c` gives a chart at least `m_compactness_ratio`
+  // times as compact as the less compact of its two charts (a curve inside a
+  // chart: always, its removal shortens the perimeter)
+  bool compact_enough(std::size_t c) const
+  {
+    const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
+    if(r1 == r2 || !(m_compactness_ratio > 0)) return true;
+    const double merged =
+        compactness(m_area[r1] + m_area[r2], m_perimeter[r1] + m_perimeter[r2] - 2 * m_curves[c].length);
+    return merged >= m_compactness_ratio * (std::min)(compactness(m_area[r1], m_perimeter[r1]),
+                                                       compactness(m_area[r2], m_perimeter[r2]));
+  }
+
   Chart_report trial(std::size_t c) const
   {
     std::vector<face_descriptor> fs;
@@ -407,6 +436,7 @@ private:
   std::vector<double> m_perimeter;  // 3D length of the border of each chart, its cuts counted twice
   std::size_t m_final_count = 0;
   Merge_order m_order = Merge_order::LARGEST_AREA_FIRST;
+  double m_compactness_ratio = 0;  // see `CGAL_QD::parameters::compactness_ratio`
 };
 
 } // namespace internal
@@ -451,13 +481,17 @@ private:
 ///     0.5) (see `optimize_flattening()`)
 ///   - `CGAL_QD::parameters::merge_order`: a `Merge_order` (default `SMALLEST_AREA_FIRST`; the paper's is
 ///     `LARGEST_AREA_FIRST`)
+///   - `CGAL_QD::parameters::compactness_ratio`: a number rho in [0, 1] (default 0.6): a curve between two
+///     charts is tried only when the chart its removal gives is at least rho times as compact (4 pi area /
+///     perimeter^2, in 3D) as the less compact of the two; otherwise it is kept without a trial (and
+///     tried again when one of its charts changes). 0 tries every curve, as the paper does
 ///   - `callback`: called with (step name, fraction done) during the run
 ///   - `verbose`: print every trial to `std::cerr` (default `false`)
 ///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
 /// \returns a `Merging_result` whose `seam_edges` are the edges to cut (the
 ///          borders between charts and the curves left inside charts); on
 ///          invalid input (the statuses of `segment_by_error_controlled_vsa()`,
-///          `INVALID_ARGUMENT` for an `area_preservation` outside [0, 1])
+///          `INVALID_ARGUMENT` for an `area_preservation` or a `compactness_ratio` outside [0, 1])
 ///          nothing is written.
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -491,8 +525,8 @@ Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, 
   typedef typename std::remove_const<decltype(fim)>::type FIM;
   typedef typename std::remove_const<decltype(him)>::type HIM;
   typedef typename std::remove_const<decltype(vim)>::type VIM;
-  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points,
-                                                              internal::merge_thresholds_from<TriangleMesh>(np));
+  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
+  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points, thresholds);
   internal::Boundary_merger<TriangleMesh, FIM, HIM, VIM> merger(tm, fim, him, evaluator, chart, n, points, vim);
   auto t = std::chrono::steady_clock::now();
   result.charts_split = merger.template split_failing_charts<ConcurrencyTag>(geo, progress);
@@ -500,6 +534,7 @@ Merging_result<TriangleMesh> merge_charts_by_boundaries(const TriangleMesh& tm, 
   merger.build_curves();
   result.boundary_curves = merger.number_of_curves();
   merger.set_order(choose_parameter(get_parameter(np, internal_np::merge_order_t()), Merge_order::SMALLEST_AREA_FIRST));
+  merger.set_compactness_ratio(thresholds.compactness_ratio);
   std::tie(result.trials, result.merges) = merger.template merge<ConcurrencyTag>(geo, progress, verbose);
   result.lpfb_not_converged = evaluator.lpfb_not_converged();
   result.number_of_charts = merger.number_of_final_charts();

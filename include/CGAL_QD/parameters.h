@@ -41,6 +41,7 @@ struct border_length_weight_t {};
 struct area_preservation_t {};
 struct iteration_callback_t {};
 struct anderson_acceleration_t {};
+struct compactness_ratio_t {};
 
 } // namespace internal_np
 
@@ -148,6 +149,13 @@ CGAL_QD_ADD_NAMED_PARAMETER(overlap_tolerance)
 /// the order of the merging trials, a `CGAL_QD::Merge_order`. Default:
 /// `Merge_order::SMALLEST_AREA_FIRST`; `LARGEST_AREA_FIRST` is the paper's.
 CGAL_QD_ADD_NAMED_PARAMETER(merge_order)
+/// a number rho in [0, 1]: the merging of `merge_charts_by_boundaries()` and
+/// `segment_quasi_developable()` tries to remove a curve between two charts
+/// only when the merged chart is at least rho times as compact (4 pi area /
+/// perimeter^2) as the less compact of the two, so that fewer pieces do not
+/// come as sprawling shapes. Default: 0.6; 0 tries every curve (the paper's
+/// merging).
+CGAL_QD_ADD_NAMED_PARAMETER(compactness_ratio)
 /// the free space around each chart in `pack_charts()`, about a fraction of
 /// the atlas side. Default: 0.005.
 CGAL_QD_ADD_NAMED_PARAMETER(atlas_margin)

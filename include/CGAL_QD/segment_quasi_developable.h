@@ -114,6 +114,7 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 ///   `max_number_of_proxies`, `number_of_relaxations`, `CGAL_QD::parameters::refinement_band_width`,
 ///   `CGAL_QD::parameters::denoising_iterations`, `CGAL_QD::parameters::max_area_distortion`,
 ///   `CGAL_QD::parameters::max_l2_stretch`, `CGAL_QD::parameters::overlap_tolerance`, `CGAL_QD::parameters::merge_order`,
+///   `CGAL_QD::parameters::compactness_ratio`,
 ///   `CGAL_QD::parameters::max_local_area_distortion`, `CGAL_QD::parameters::chart_criterion`,
 ///   `CGAL_QD::parameters::area_preservation`), the switches `CGAL_QD::parameters::refine_boundaries`,
 ///   `CGAL_QD::parameters::denoise_boundaries`, `CGAL_QD::parameters::merge_charts`,
@@ -122,8 +123,8 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 ///   (a line per step and per trial on `std::cerr`), and `vertex_point_map`, `vertex_index_map`,
 ///   `face_index_map`, `halfedge_index_map`.
 /// \returns a `Segmentation_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES` or
-///          `DEGENERATE_FACE` on invalid input, `INVALID_ARGUMENT` for an `area_preservation` outside
-///          [0, 1], in which case nothing is written.
+///          `DEGENERATE_FACE` on invalid input, `INVALID_ARGUMENT` for an `area_preservation` or a
+///          `compactness_ratio` outside [0, 1], in which case nothing is written.
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& tm, FaceChartMap face_chart,
@@ -218,6 +219,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   merger.build_curves();
   result.merging.boundary_curves = merger.number_of_curves();
   merger.set_order(choose_parameter(get_parameter(snp, internal_np::merge_order_t()), Merge_order::SMALLEST_AREA_FIRST));
+  merger.set_compactness_ratio(thresholds.compactness_ratio);
   if(progress && merge) progress("merge", 0.);
   std::tie(result.merging.trials, result.merging.merges) =
       merger.template merge<ConcurrencyTag>(geo, progress, verbose, merge);
