@@ -142,6 +142,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                       {"flattening", c.optimized ? "ARAP" : "LPFB+IP"},
                       {"seam_lengths_matched", c.lengths_matched},
                       {"seams_matched", c.seams_matched},
+                      {"compactness", number(c.compactness)},
                       {"overlap", c.overlap}});
   }
   j["per_chart"] = std::move(charts);

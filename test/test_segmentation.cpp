@@ -290,6 +290,23 @@ void expect_valid_segmentation(const Mesh& tm, const Chart_map<Mesh>& chart,
     area3[k] += a3;
     local[k] += std::abs(a2 - a3);
   }
+  // every piece's compactness 4 pi A / P^2 (P along its border and twice along its cuts), and their
+  // area-weighted mean
+  std::vector<double> perimeter(r.number_of_charts, 0.);
+  for(auto h : halfedges(tm)) {
+    if(is_border(h, tm)) continue;
+    const auto o = opposite(h, tm);
+    if(seam.count(edge(h, tm)) || is_border(o, tm) || chart.at(face(o, tm)) != chart.at(face(h, tm)))
+      perimeter[chart.at(face(h, tm))] += length3(h);
+  }
+  double weighted = 0, total = 0;
+  for(std::size_t k = 0; k < r.number_of_charts; ++k) {
+    const double c = perimeter[k] > 0 ? 4 * pi * area3[k] / (perimeter[k] * perimeter[k]) : 0.;
+    BOOST_TEST(std::abs(c - r.charts[k].compactness) <= 1e-9 * (1 + c));
+    weighted += area3[k] * r.charts[k].compactness;
+    total += area3[k];
+  }
+  BOOST_TEST(std::abs(weighted / total - r.compactness) <= 1e-9);
   for(std::size_t k = 0; k < r.number_of_charts; ++k) {
     const double A = 100 * std::abs(area2[k] - area3[k]) / area3[k], A_loc = 100 * local[k] / area3[k];
     BOOST_TEST(A <= max_area);

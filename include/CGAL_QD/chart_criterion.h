@@ -95,6 +95,9 @@ struct Chart_report
   /// whether every seam curve along the chart has its two sides within 0.5 % of each other in the
   /// final flattening (`Chart_flattening_result::seam_curves_matched`); true for a chart without seams
   bool seams_matched = true;
+  /// the compactness `4 pi A / P^2` of the piece (`chart_compactness()`: 3D area, perimeter along its
+  /// border with its cuts counted twice), set by the final flattening; 0 in the trials
+  double compactness = 0;
 };
 
 namespace internal {

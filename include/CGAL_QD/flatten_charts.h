@@ -348,11 +348,14 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     if(!is_border_edge(h, tm) && chart[get(fim, face(h, tm))] == chart[get(fim, face(opposite(h, tm), tm))])
       cuts.insert(e);
   }
-  result.compactness =
+  const Chart_compactness compactness =
       chart_compactness(tm, boost::make_iterator_property_map(chart.cbegin(), fim),
                         CGAL::parameters::vertex_point_map(vpm).face_index_map(fim).edge_is_constrained_map(
-                            CGAL::make_boolean_property_map(cuts)))
-          .compactness;
+                            CGAL::make_boolean_property_map(cuts)));
+  result.compactness = compactness.compactness;
+  for(std::size_t k = 0; k < compactness.number_of_charts; ++k)
+    if(compactness.chart_id[k] < result.charts.size())
+      result.charts[compactness.chart_id[k]].compactness = compactness.chart_compactness[k];
   result.time_flatten_ms = milliseconds_since(t);
   if(progress) progress("flatten", 1.);
 }
