@@ -298,25 +298,30 @@ private:
 
   std::size_t find(std::size_t x) const { return m_sets.root(x); }
 
-  double key(std::size_t c) const
+  // the area and the perimeter (cuts counted twice) of the chart that removing curve `c` gives
+  std::pair<double, double> merged_chart(std::size_t c) const
   {
     const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
-    const double area = r1 == r2 ? m_area[r1] : m_area[r1] + m_area[r2];
-    switch(m_order) {
-    case Merge_order::SMALLEST_AREA_FIRST: return -area;
-    case Merge_order::LONGEST_RELATIVE_CURVE_FIRST: return m_curves[c].length / std::sqrt(area);
-    case Merge_order::MOST_COMPACT_FIRST: {
-      const double p = (r1 == r2 ? m_perimeter[r1] : m_perimeter[r1] + m_perimeter[r2]) - 2 * m_curves[c].length;
-      return p > 0 ? 4 * 3.14159265358979323846 * area / (p * p) : 0.;
-    }
-    default: return area;
-    }
+    if(r1 == r2) return {m_area[r1], m_perimeter[r1] - 2 * m_curves[c].length};
+    return {m_area[r1] + m_area[r2], m_perimeter[r1] + m_perimeter[r2] - 2 * m_curves[c].length};
   }
 
   // compactness 4 pi A / P^2 of a chart of area `area` and perimeter `perimeter` (1 without perimeter)
   static double compactness(double area, double perimeter)
   {
     return perimeter > 0 ? 4 * 3.14159265358979323846 * area / (perimeter * perimeter) : 1.;
+  }
+
+  double key(std::size_t c) const
+  {
+    const std::pair<double, double> merged = merged_chart(c);
+    const double area = merged.first;
+    switch(m_order) {
+    case Merge_order::SMALLEST_AREA_FIRST: return -area;
+    case Merge_order::LONGEST_RELATIVE_CURVE_FIRST: return m_curves[c].length / std::sqrt(area);
+    case Merge_order::MOST_COMPACT_FIRST: return merged.second > 0 ? compactness(area, merged.second) : 0.;
+    default: return area;
+    }
   }
 
   // whether removing curve `c` gives a chart at least `m_compactness_ratio`
@@ -326,10 +331,10 @@ private:
   {
     const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
     if(r1 == r2 || !(m_compactness_ratio > 0)) return true;
-    const double merged =
-        compactness(m_area[r1] + m_area[r2], m_perimeter[r1] + m_perimeter[r2] - 2 * m_curves[c].length);
-    return merged >= m_compactness_ratio * (std::min)(compactness(m_area[r1], m_perimeter[r1]),
-                                                       compactness(m_area[r2], m_perimeter[r2]));
+    const std::pair<double, double> merged = merged_chart(c);
+    return compactness(merged.first, merged.second) >=
+           m_compactness_ratio * (std::min)(compactness(m_area[r1], m_perimeter[r1]),
+                                            compactness(m_area[r2], m_perimeter[r2]));
   }
 
   Chart_report trial(std::size_t c) const
