@@ -333,10 +333,10 @@ private:
     };
     auto last = uv;       // the latest optimisation started from LPFB+IP
     bool capped = false;  // whether it stopped at its iteration cap
-    // a final flattening with area-preserving targets also tries plain ARAP
-    // from LPFB+IP: those targets take a chart that develops onto the plane
-    // towards its isometric unfolding only slowly (the anisotropy of its faces
-    // falls to about the share kept at each iteration)
+    // a final flattening with area-preserving targets that is not accepted
+    // also tries plain ARAP from LPFB+IP: those targets take a chart that
+    // develops onto the plane towards its isometric unfolding only slowly (the
+    // anisotropy of its faces falls to about the share kept at each iteration)
     const bool plain_too = !paper && corner_uv && m_thresholds.area_preservation > 0;
     auto lpfb_ip = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:lpfb", K::Point_2(0, 0)).first;
     if(plain_too)
@@ -372,7 +372,7 @@ private:
         if(better(more, r)) uv = more;
       }
     }
-    if(plain_too) {
+    if(plain_too && !rep.accepted) {
       const Optimization_result o =
           optimize_flattening(sm, lpfb_ip, trial_parameters(0.).number_of_iterations(100));
       if(better(lpfb_ip, o)) uv = lpfb_ip;
