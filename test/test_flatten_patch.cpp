@@ -354,6 +354,58 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(arap_lowers_the_stretch_of_a_cap, Mesh, Mesh_types
   BOOST_TEST(QD::compute_distortion(tm, pulled.pmap_const()).flipped_faces == 0u);
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(no_free_iteration_fits_the_border_to_the_given_map, Mesh, Mesh_types)
+{
+  // the cap of 70 degrees, its border fitted at the 3D lengths (30 free
+  // iterations, then the border fitted): fitting it again without free
+  // iterations finds the same border (the given map's angles, at lengths it
+  // already has), where 30 free iterations first let it shrink and move
+  const Mesh tm = make<Mesh>(polar(12, 48, sphere_cap(70 * pi / 180)));
+  const auto f = flatten(tm);
+  Uv_store<Mesh> fitted = f.uv;
+  const QD::Optimization_result k = QD::optimize_flattening(tm, fitted.pmap());
+  BOOST_REQUIRE_MESSAGE(k, QD::error_message(k.status));
+  BOOST_REQUIRE(k.lengths_preserved);
+
+  auto largest_border_move = [&](const Uv_store<Mesh>& a, const Uv_store<Mesh>& b) {
+    double move = 0;
+    for(auto v : vertices(tm))
+      if(is_border(v, tm)) {
+        const auto p = a.at(v), q = b.at(v);
+        move = (std::max)(move, std::hypot(p[0] - q[0], p[1] - q[1]));
+      }
+    return move;
+  };
+  Uv_store<Mesh> again = fitted, with_free = fitted;
+  std::size_t calls = 0;
+  const QD::Optimization_result a = QD::optimize_flattening(
+      tm, again.pmap(), QD::parameters::number_of_free_iterations(0, QD::parameters::iteration_callback([&](std::size_t) {
+        ++calls;
+        return false;
+      })));
+  BOOST_REQUIRE_MESSAGE(a, QD::error_message(a.status));
+  BOOST_TEST(a.lengths_preserved);
+  BOOST_TEST(calls == 0u);  // no free iteration
+  BOOST_TEST(a.iterations <= 30u);
+  BOOST_TEST(border_length_error(tm, again, [&](auto h) { return length3(tm, h); }) < 1e-6);
+  const QD::Optimization_result w = QD::optimize_flattening(tm, with_free.pmap());
+  BOOST_REQUIRE_MESSAGE(w, QD::error_message(w.status));
+  const double kept = largest_border_move(fitted, again), moved = largest_border_move(fitted, with_free);
+  BOOST_TEST_MESSAGE("cap: the border moves by " << kept << " without free iterations, " << moved
+                                                 << " with 30 (radius about 1)");
+  BOOST_TEST(kept < 1e-6);
+  BOOST_TEST(moved > 1e-3);
+  BOOST_TEST(QD::compute_distortion(tm, again.pmap_const()).flipped_faces == 0u);
+
+  // a negative or non-finite count is refused, and nothing is written
+  for(const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Uv_store<Mesh> uv = f.uv;
+    BOOST_TEST((QD::optimize_flattening(tm, uv.pmap(), QD::parameters::number_of_free_iterations(bad)).status ==
+                QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST((uv.map == f.uv.map));
+  }
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_callback_sees_every_map_and_can_stop, Mesh, Mesh_types)
 {
   // the cap of 70 degrees, free border, half of the anisotropy kept: the

@@ -298,9 +298,11 @@ private:
       for(auto v : vertices(sm)) put(exact, v, get(uv, v));
       const Optimization_result e = optimize_flattening(
           sm, exact,
-          parameters::arap_border(Arap_border::LENGTH_PRESERVED,
-                                  parameters::border_edge_length_map(
-                                      goal, parameters::area_preservation(m_thresholds.area_preservation))));
+          parameters::arap_border(
+              Arap_border::LENGTH_PRESERVED,
+              parameters::number_of_free_iterations(
+                  0, parameters::border_edge_length_map(
+                         goal, parameters::area_preservation(m_thresholds.area_preservation)))));
       Chart_report exact_rep = rep;
       if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
         exact_rep.optimized = exact_rep.lengths_matched = true;

@@ -284,6 +284,9 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///     area distortion. With alpha = 1 every target is area-preserving with J's own aspect ratio.
 ///   - `number_of_iterations`: at most this many iterations (default 30); the iteration also stops
 ///     when one lowers the energy by less than 1e-4 of itself
+///   - `CGAL_QD::parameters::number_of_free_iterations`: with `LENGTH_PRESERVED`, at most this many
+///     iterations of the free map before its border is fitted (default: `number_of_iterations`); 0 fits the
+///     border to the angles of the given map, then `number_of_iterations` fit the interior to it
 ///   - `CGAL_QD::parameters::anderson_acceleration`: a number m in [0, 100] (default 0). With m > 0, each
 ///     iteration combines the last m + 1 iterates and their images (Anderson acceleration; Walker and Ni
 ///     2011, Peng et al. 2018) and takes the combination where it keeps the map flip-free and lowers the
@@ -300,8 +303,8 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///          |coordinate| of a point or UV beyond [2^-64, 2^64]), `DEGENERATE_FACE`,
 ///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite),
 ///          `INVALID_ARGUMENT` (an `area_preservation` outside [0, 1], an `anderson_acceleration` outside
-///          [0, 100]) on invalid input, `SOLVER_FAILED` if the system could not
-///          be solved; in those cases nothing is written.
+///          [0, 100], a negative or non-finite `number_of_free_iterations`) on invalid input,
+///          `SOLVER_FAILED` if the system could not be solved; in those cases nothing is written.
 /// \sa `flatten_patch()`
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
@@ -334,6 +337,12 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
     return result;
   }
   opt.anderson_window = static_cast<std::size_t>(window);
+  const double free_iterations =
+      double(choose_parameter(get_parameter(np, internal_np::number_of_free_iterations_t()), double(opt.iterations)));
+  if(!(free_iterations >= 0) || !std::isfinite(free_iterations)) {
+    result.status = Error_code::INVALID_ARGUMENT;
+    return result;
+  }
   if(!(opt.area_preservation >= 0 && opt.area_preservation <= 1)) {
     result.status = Error_code::INVALID_ARGUMENT;
     return result;
@@ -400,9 +409,17 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
     return result;
   }
   const Arap_border mode = opt.border;
-  if(mode == Arap_border::LENGTH_PRESERVED) opt.border = Arap_border::FREE;
-  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::iteration_callback_t>::value) {
-    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver);
+  internal::Arap_options free_opt = opt;
+  if(mode == Arap_border::LENGTH_PRESERVED) {
+    free_opt.border = Arap_border::FREE;
+    free_opt.iterations = static_cast<std::size_t>(free_iterations);
+  }
+  const bool no_free_iteration = mode == Arap_border::LENGTH_PRESERVED && free_opt.iterations == 0;
+  if(no_free_iteration) {
+    // the border is fitted to the given map
+  } else if constexpr(CGAL::parameters::is_default_parameter<NamedParameters,
+                                                             internal_np::iteration_callback_t>::value) {
+    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver);
   } else {
     // the map of every iteration written to `uv` for the user's callback
     const auto& user = get_parameter(np, internal_np::iteration_callback_t());
@@ -412,7 +429,7 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       for(std::size_t i = 0; i < nv; ++i) put(uv, vertex_of[i], Point_2(map[i][0], map[i][1]));
       return bool(user(iterations));
     };
-    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver, callback);
+    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver, callback);
   }
   if(!result) return result;
   if(mode == Arap_border::LENGTH_PRESERVED) {
@@ -453,6 +470,10 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       opt.border = Arap_border::FIXED;
       const Optimization_result fixed = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, opt, solver);
       if(!fixed) return fixed;
+      if(no_free_iteration) {
+        result.energy_before = fixed.energy_before;
+        result.input_flipped = fixed.input_flipped;
+      }
       result.iterations += fixed.iterations;
       result.shortened_steps += fixed.shortened_steps;
       result.energy_after = fixed.energy_after;

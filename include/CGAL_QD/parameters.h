@@ -41,6 +41,7 @@ struct border_length_weight_t {};
 struct area_preservation_t {};
 struct iteration_callback_t {};
 struct anderson_acceleration_t {};
+struct number_of_free_iterations_t {};
 struct compactness_ratio_t {};
 
 } // namespace internal_np
@@ -138,6 +139,11 @@ CGAL_QD_ADD_NAMED_PARAMETER(iteration_callback)
 /// reaches sooner can overlap itself where the map of the 30th plain iteration
 /// does not.
 CGAL_QD_ADD_NAMED_PARAMETER(anderson_acceleration)
+/// with `Arap_border::LENGTH_PRESERVED`, the largest number of iterations of
+/// the free map in `optimize_flattening()` before its border is fitted at the
+/// target lengths (a number >= 0; 0 fits the border to the angles of the given
+/// map itself). Default: `number_of_iterations`.
+CGAL_QD_ADD_NAMED_PARAMETER(number_of_free_iterations)
 /// the ratio of the longest to the shortest edge above which `inspect_mesh()`
 /// counts a triangle as a needle. Default: 1000.
 CGAL_QD_ADD_NAMED_PARAMETER(needle_threshold)
