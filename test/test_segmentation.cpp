@@ -992,6 +992,19 @@ struct Normal_deviation
   std::size_t different = 0;     // faces whose two normals are not the same
 };
 
+// the radius of step 1's normal smoothing: 0.03 times the diagonal of the
+// bounding box of the face centroids
+double step1_smoothing_radius(const std::vector<QD::internal::Face_geometry>& geo)
+{
+  std::array<double, 3> lo = geo.front().centroid, hi = lo;
+  for(const auto& g : geo)
+    for(int k = 0; k < 3; ++k) {
+      lo[k] = (std::min)(lo[k], g.centroid[k]);
+      hi[k] = (std::max)(hi[k], g.centroid[k]);
+    }
+  return QD::internal::vsa_smoothing_radius * std::sqrt(QD::internal::squared_distance3(lo, hi));
+}
+
 // how the smoothed normal of every face, clustered (always with `force`, else
 // where the default rule chooses the clusters), differs from the face by face one
 Normal_deviation clustered_normal_deviation(const Series_mesh& tm, bool force)
@@ -999,14 +1012,7 @@ Normal_deviation clustered_normal_deviation(const Series_mesh& tm, bool force)
   const auto fim = get(CGAL::face_index, tm);
   const std::vector<QD::internal::Face_geometry> geo =
       QD::internal::face_geometry(tm, get(CGAL::vertex_point, tm), fim);
-  std::array<double, 3> lo = geo.front().centroid, hi = lo;
-  for(const auto& g : geo)
-    for(int k = 0; k < 3; ++k) {
-      lo[k] = (std::min)(lo[k], g.centroid[k]);
-      hi[k] = (std::max)(hi[k], g.centroid[k]);
-    }
-  const double radius = QD::internal::vsa_smoothing_radius *
-                        std::sqrt(QD::internal::squared_distance3(lo, hi));
+  const double radius = step1_smoothing_radius(geo);
   const auto exact = QD::internal::smooth_face_normals(tm, fim, geo, radius, QD::internal::vsa_crease_cos,
                                                        std::numeric_limits<double>::infinity());
   const auto clustered = force ? QD::internal::smooth_face_normals(tm, fim, geo, radius,
@@ -1048,6 +1054,35 @@ BOOST_AUTO_TEST_CASE(clustered_normal_smoothing_follows_the_face_by_face_one)
   BOOST_TEST(clustered_normal_deviation(read_demo_mesh("elephant"), false).different == 0u);
   // ... and a fine one takes the clusters (about 380 faces per disc)
   BOOST_TEST(clustered_normal_deviation(at_resolution(read_demo_mesh("elephant"), 2), false).different > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(parallel_normal_smoothing_is_the_sequential_one)
+{
+  // elephant (face by face) and elephant subdivided once with clusters forced:
+  // the discs summed in parallel give every normal to the last bit
+  for(const bool clustered : {false, true}) {
+    const Series_mesh tm = clustered ? at_resolution(read_demo_mesh("elephant"), 1) : read_demo_mesh("elephant");
+    const auto fim = get(CGAL::face_index, tm);
+    const std::vector<QD::internal::Face_geometry> geo =
+        QD::internal::face_geometry(tm, get(CGAL::vertex_point, tm), fim);
+    const double radius = step1_smoothing_radius(geo);
+    const double cluster_above = clustered ? 0. : std::numeric_limits<double>::infinity();
+    const auto sequential = QD::internal::smooth_face_normals<CGAL::Sequential_tag>(
+        tm, fim, geo, radius, QD::internal::vsa_crease_cos, cluster_above);
+    const auto parallel = QD::internal::smooth_face_normals<CGAL::Parallel_tag>(
+        tm, fim, geo, radius, QD::internal::vsa_crease_cos, cluster_above);
+    BOOST_REQUIRE(sequential.size() == geo.size());
+    BOOST_REQUIRE(parallel.size() == geo.size());
+    std::size_t smoothed = 0, same = 0;
+    for(std::size_t i = 0; i < geo.size(); ++i) {
+      if(sequential[i].normal != geo[i].normal) ++smoothed;
+      if(sequential[i].normal == parallel[i].normal) ++same;
+    }
+    BOOST_TEST_MESSAGE((clustered ? "clusters: " : "faces: ") << smoothed << " of " << geo.size()
+                                                               << " normals smoothed");
+    BOOST_TEST(smoothed > geo.size() / 2);  // the smoothing did something
+    BOOST_TEST(same == geo.size());
+  }
 }
 
 // The full series of doc/segmentation_results.md, too slow for every run:

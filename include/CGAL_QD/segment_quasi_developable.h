@@ -105,8 +105,8 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 /// handles: the charts are disks with holes, and the seams open the rest.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag` (the trials of the merging and the final
-///         flattenings run in parallel with TBB; the result is the same)
+///         `CGAL::Parallel_if_available_tag` (the normal smoothing of step 1, the trials of the
+///         merging and the final flattenings run in parallel with TBB; the result is the same)
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam FaceChartMap a model of `WritablePropertyMap` from faces to an integral type; receives a
 ///         chart id in `[0, n)` per face
@@ -171,7 +171,7 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
 
   // 1. error-controlled VSA
   if(progress) progress("vsa", 0.);
-  result.vsa = segment_by_error_controlled_vsa(tm, chart_map, snp);
+  result.vsa = segment_by_error_controlled_vsa<ConcurrencyTag>(tm, chart_map, snp);
   result.time_vsa_ms = result.vsa.time_ms;
   result.charts_after_vsa = result.charts_after_refinement = result.vsa.number_of_charts;
   if(verbose) std::cerr << "VSA: " << result.charts_after_vsa << " charts in " << result.time_vsa_ms << " ms\n";

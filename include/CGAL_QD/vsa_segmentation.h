@@ -19,6 +19,7 @@
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -239,6 +240,9 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 ///
 /// The mesh may be closed, have borders, several components or handles.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag` (the smoothing of the face normals runs in
+///         parallel with TBB; the result is the same)
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam FaceChartMap a model of `WritablePropertyMap` with
 ///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and an
@@ -255,7 +259,7 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 /// \returns a `Vsa_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`
 ///          or `DEGENERATE_FACE` on invalid input, `INVALID_ARGUMENT` for a mesh of
 ///          2^32 faces or more, in which case nothing is written.
-template <class TriangleMesh, class FaceChartMap,
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap face_chart,
                                            const NamedParameters& np = CGAL::parameters::default_values())
@@ -297,7 +301,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   result.smoothing_radius = internal::vsa_smoothing_radius * diagonal;
   result.min_chart_area = internal::vsa_min_chart_size * diagonal * internal::vsa_min_chart_size * diagonal;
   const std::vector<internal::Face_geometry> geo =
-      internal::smooth_face_normals(tm, fim, raw, result.smoothing_radius, internal::vsa_crease_cos);
+      internal::smooth_face_normals<ConcurrencyTag>(tm, fim, raw, result.smoothing_radius, internal::vsa_crease_cos);
   const std::size_t geometric_cap =
       result.min_chart_area > 0 ? static_cast<std::size_t>(std::ceil(total_area / result.min_chart_area)) : 1;
   const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),

@@ -10,6 +10,7 @@
 
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/constants.h>
+#include <CGAL_QD/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
@@ -93,7 +94,10 @@ std::array<double, 3> disc_sum(std::size_t start, const std::array<double, 3>& c
 // `radius` of the face's centroid, reached through such clusters. The rim of
 // the disc is then known to a cluster's width, and the cost per face is the
 // number of clusters in a disc, which does not grow with the face count.
-template <class TriangleMesh, class FIM>
+//
+// With `CGAL::Parallel_tag` the faces' discs are summed in parallel (the
+// clusters are grown first, in order): the result is the same.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FIM>
 std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM& fim,
                                                const std::vector<Face_geometry>& geo, double radius,
                                                double sharp_cos, double cluster_above = clustered_disc_faces,
@@ -113,15 +117,23 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
   for(const Face_geometry& g : geo) area += g.area;
   const bool clustered = area > 0 && double(nf) * pi * r2 / area > cluster_above;
 
-  std::vector<std::size_t> stamp(nf, none), queue;
+  // the faces in `blocks` ranges, each with its own scratch: every face's sum
+  // is the same whatever the number of blocks
+  const std::size_t blocks = (std::min)(nf, batch_size<ConcurrencyTag>());
+  auto for_each_face = [&](std::size_t scratch_size, const auto& smooth) {
+    for_each_index<ConcurrencyTag>(blocks, [&](std::size_t b) {
+      std::vector<std::size_t> stamp(scratch_size, none), queue;
+      for(std::size_t s = b * nf / blocks; s < (b + 1) * nf / blocks; ++s) smooth(s, stamp, queue);
+    });
+  };
   if(!clustered) {
-    for(std::size_t s = 0; s < nf; ++s) {
+    for_each_face(nf, [&](std::size_t s, std::vector<std::size_t>& stamp, std::vector<std::size_t>& queue) {
       bool near = false;  // most faces of a coarse mesh have no neighbour within the radius
       for(int j = 0; j < 3; ++j) {
         const std::size_t g = next_to[s][j];
         near = near || (g != none && squared_distance3(geo[s].centroid, geo[g].centroid) <= r2);
       }
-      if(!near) continue;
+      if(!near) return;
       const std::array<double, 3> sum = disc_sum(
           s, geo[s].centroid, r2,
           [&](std::size_t i, const auto& visit) {
@@ -135,14 +147,14 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
           },
           s, stamp, queue);
       set_normal(s, sum);
-    }
+    });
     return out;
   }
 
   // clusters: grown from the faces in index order, across smooth edges, to the
   // faces within the cluster radius of the seed's centroid
   const double c2 = cluster_radius * cluster_radius * r2;
-  std::vector<std::size_t> cluster_of(nf, none);
+  std::vector<std::size_t> cluster_of(nf, none), queue;
   std::vector<std::array<double, 3>> normal_sum, centroid;  // area-weighted sum; centroid of the faces
   std::vector<double> cluster_area;
   for(std::size_t s = 0; s < nf; ++s) {
@@ -186,21 +198,20 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
   }
-  std::vector<std::size_t> seen(nc, none);
-  for(std::size_t s = 0; s < nf; ++s) {
+  for_each_face(nc, [&](std::size_t s, std::vector<std::size_t>& seen, std::vector<std::size_t>& scratch) {
     const std::size_t c0 = cluster_of[s];
     bool near = cluster_area[c0] > geo[s].area;  // the face's own cluster has other faces
     for(std::size_t d : adjacent[c0]) near = near || squared_distance3(geo[s].centroid, centroid[d]) <= r2;
-    if(!near) continue;
+    if(!near) return;
     const std::array<double, 3> sum = disc_sum(
         c0, geo[s].centroid, r2,
         [&](std::size_t c, const auto& visit) {
           for(std::size_t d : adjacent[c]) visit(d);
         },
         [&](std::size_t c) -> const std::array<double, 3>& { return centroid[c]; },
-        [&](std::size_t c) -> const std::array<double, 3>& { return normal_sum[c]; }, s, seen, queue);
+        [&](std::size_t c) -> const std::array<double, 3>& { return normal_sum[c]; }, s, seen, scratch);
     set_normal(s, sum);
-  }
+  });
   return out;
 }
 
