@@ -397,6 +397,13 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(no_free_iteration_fits_the_border_to_the_given_map
   BOOST_TEST(moved > 1e-3);
   BOOST_TEST(QD::compute_distortion(tm, again.pmap_const()).flipped_faces == 0u);
 
+  // a huge count runs the free iteration until it converges
+  Uv_store<Mesh> huge = f.uv;
+  const QD::Optimization_result h =
+      QD::optimize_flattening(tm, huge.pmap(), QD::parameters::number_of_free_iterations(1e30));
+  BOOST_REQUIRE_MESSAGE(h, QD::error_message(h.status));
+  BOOST_TEST(h.lengths_preserved);
+
   // a negative or non-finite count is refused, and nothing is written
   for(const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     Uv_store<Mesh> uv = f.uv;

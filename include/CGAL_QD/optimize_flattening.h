@@ -412,7 +412,7 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
   internal::Arap_options free_opt = opt;
   if(mode == Arap_border::LENGTH_PRESERVED) {
     free_opt.border = Arap_border::FREE;
-    free_opt.iterations = static_cast<std::size_t>(free_iterations);
+    free_opt.iterations = static_cast<std::size_t>((std::min)(free_iterations, 1e9));  // no wrap-around
   }
   const bool no_free_iteration = mode == Arap_border::LENGTH_PRESERVED && free_opt.iterations == 0;
   if(no_free_iteration) {
