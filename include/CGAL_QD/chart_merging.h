@@ -14,6 +14,7 @@
 #include <CGAL_QD/merge_order.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/boundary_merger.h>
+#include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/vsa_segmentation.h>
 

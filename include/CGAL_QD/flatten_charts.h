@@ -11,6 +11,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/chart_criterion.h>
+#include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/parameters.h>

@@ -415,21 +415,21 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
     free_opt.iterations = static_cast<std::size_t>((std::min)(free_iterations, 1e9));  // no wrap-around
   }
   const bool no_free_iteration = mode == Arap_border::LENGTH_PRESERVED && free_opt.iterations == 0;
-  if(no_free_iteration) {
-    // the border is fitted to the given map
-  } else if constexpr(CGAL::parameters::is_default_parameter<NamedParameters,
-                                                             internal_np::iteration_callback_t>::value) {
-    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver);
-  } else {
-    // the map of every iteration written to `uv` for the user's callback
-    const auto& user = get_parameter(np, internal_np::iteration_callback_t());
-    std::vector<vertex_descriptor> vertex_of(nv);
-    for(vertex_descriptor v : vertices(tm)) vertex_of[get(vim, v)] = v;
-    const auto callback = [&](std::size_t iterations, const std::vector<std::array<double, 2>>& map) {
-      for(std::size_t i = 0; i < nv; ++i) put(uv, vertex_of[i], Point_2(map[i][0], map[i][1]));
-      return bool(user(iterations));
-    };
-    result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver, callback);
+  // with no free iteration, the border is fitted to the given map
+  if(!no_free_iteration) {
+    if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::iteration_callback_t>::value) {
+      result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver);
+    } else {
+      // the map of every iteration written to `uv` for the user's callback
+      const auto& user = get_parameter(np, internal_np::iteration_callback_t());
+      std::vector<vertex_descriptor> vertex_of(nv);
+      for(vertex_descriptor v : vertices(tm)) vertex_of[get(vim, v)] = v;
+      const auto callback = [&](std::size_t iterations, const std::vector<std::array<double, 2>>& map) {
+        for(std::size_t i = 0; i < nv; ++i) put(uv, vertex_of[i], Point_2(map[i][0], map[i][1]));
+        return bool(user(iterations));
+      };
+      result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver, callback);
+    }
   }
   if(!result) return result;
   if(mode == Arap_border::LENGTH_PRESERVED) {

@@ -15,6 +15,7 @@
 #include <CGAL_QD/boundary_refinement.h>
 #include <CGAL_QD/chart_merging.h>
 #include <CGAL_QD/flatten_charts.h>
+#include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/segmentation_measures.h>

@@ -12,6 +12,7 @@
 #include <CGAL_QD/chart_criterion.h>
 #include <CGAL_QD/merge_order.h>
 #include <CGAL_QD/internal/chart_bisection.h>
+#include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/internal/union_find.h>

@@ -1,0 +1,418 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_INTERNAL_CHART_EVALUATOR_H
+#define CGAL_QD_INTERNAL_CHART_EVALUATOR_H
+
+// The evaluator that flattens one chart by its `Chart_criterion` and measures
+// it into a `Chart_report` (chart_criterion.h): shared by the splitting, the
+// merging (chart_merging.h) and the final flattening (flatten_charts.h).
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/chart_criterion.h>
+#include <CGAL_QD/distortion.h>
+#include <CGAL_QD/extract_chart.h>
+#include <CGAL_QD/flatten_patch.h>
+#include <CGAL_QD/optimize_flattening.h>
+#include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/flattening_cache.h>
+#include <CGAL_QD/internal/hopeless_trial.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// Flattens a set of faces of `tm` cut open along the cut edges, by LPFB+IP,
+// and measures the result. Thread-safe: `evaluate` only reads shared data
+// (and takes a scratch buffer from a pool under a lock).
+template <class TriangleMesh, class FIM, class VIM>
+class Chart_evaluator
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+  Chart_evaluator(const TriangleMesh& tm, const FIM& fim, const VIM& vim,
+                  const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds)
+      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds)
+  {}
+
+  // evaluations whose LPFB reached its iteration limit
+  std::size_t lpfb_not_converged() const { return m_not_converged.load(); }
+
+  // `faces` in increasing face index; `corner_uv`, if given, receives the UVs
+  // of the corners (3 per face, in the order of `faces`). `border_target`, if
+  // given, holds per corner the target 2D length of the edge that ends at it
+  // (used for the border edges of the chart cut open), and `start_uv` the
+  // chart's flattening by corner, fitted to those lengths instead of
+  // flattening the chart again: every border edge at exactly its target
+  // length where the thresholds allow it (`exact`), or else pulled towards
+  // it with `pull_weight` (`Arap_border::KEEP_LENGTHS`; with a small weight,
+  // a step towards the targets that the chart takes as far as its rigidity
+  // lets it).
+  template <class IsCut>
+  Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
+                        std::vector<std::array<double, 2>>* corner_uv = nullptr,
+                        const std::vector<double>* border_target = nullptr,
+                        const std::vector<std::array<double, 2>>* start_uv = nullptr, double pull_weight = 1000.,
+                        bool exact = true) const
+  {
+    Wedges<TriangleMesh> wedges;
+    {
+      // the position of every face of the set, in a buffer kept between
+      // trials: a trial sets and resets only its own faces
+      Scratch_buffer local(*this);
+      for(std::size_t i = 0; i < faces.size(); ++i) (*local)[get(m_fim, faces[i])] = static_cast<long>(i);
+      compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
+      for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
+    }
+    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact);
+    // the chart cut open, the fit's targets and start, and the thresholds
+    Digest digest;
+    const std::uint64_t flags =
+        (corner_uv ? 1u : 0u) | (border_target ? 2u : 0u) | (start_uv ? 4u : 0u) | (exact ? 8u : 0u);
+    digest.add(&flags, sizeof(flags));
+    digest.add(&pull_weight, sizeof(pull_weight));
+    const double t[] = {m_thresholds.max_area_distortion, m_thresholds.max_l2_stretch,
+                        m_thresholds.max_local_area_distortion, m_thresholds.border_length_weight,
+                        m_thresholds.overlap_tolerance, m_thresholds.area_preservation};
+    const std::uint64_t modes[] = {std::uint64_t(m_thresholds.criterion), std::uint64_t(m_thresholds.arap_border)};
+    digest.add(t, sizeof(t));
+    digest.add(modes, sizeof(modes));
+    digest.add_vector(wedges.wedge_of_corner);
+    for(std::size_t w = 0; w < wedges.size(); ++w)
+      digest.add(m_points[get(m_vim, wedges.vertex_of_wedge[w])].data(), 3 * sizeof(double));
+    if(border_target) digest.add_vector(*border_target);
+    if(start_uv) digest.add_vector(*start_uv);
+    const auto key = digest.value();
+    // stored by wedge: every corner of a wedge has the wedge's UV
+    Chart_report rep;
+    std::vector<std::array<double, 2>> wedge_uv;
+    if(m_cache->find(key, rep, &wedge_uv)) {
+      if(corner_uv && !wedge_uv.empty()) {
+        corner_uv->resize(wedges.wedge_of_corner.size());
+        for(std::size_t c = 0; c < wedges.wedge_of_corner.size(); ++c)
+          (*corner_uv)[c] = wedge_uv[wedges.wedge_of_corner[c]];
+      }
+      return rep;
+    }
+    rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact);
+    if(corner_uv && corner_uv->size() == wedges.wedge_of_corner.size()) {
+      wedge_uv.resize(wedges.size());
+      for(std::size_t c = 0; c < wedges.wedge_of_corner.size(); ++c)
+        wedge_uv[wedges.wedge_of_corner[c]] = (*corner_uv)[c];
+    }
+    m_cache->store(key, rep, &wedge_uv);
+    return rep;
+  }
+
+  // flattenings are looked up in `cache` (and stored there) from now on; nullptr: none
+  void set_cache(Flattening_cache<Chart_report>* cache) { m_cache = cache; }
+
+private:
+  // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
+  Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges,
+                       std::vector<std::array<double, 2>>* corner_uv, const std::vector<double>* border_target,
+                       const std::vector<std::array<double, 2>>* start_uv, double pull_weight, bool exact) const
+  {
+    Chart_report rep;
+    rep.number_of_faces = n_faces;
+    Mesh sm;
+    sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
+               static_cast<typename Mesh::size_type>(3 * n_faces),
+               static_cast<typename Mesh::size_type>(n_faces));
+    for(std::size_t w = 0; w < wedges.size(); ++w) {
+      const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
+      sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
+    }
+    for(std::size_t i = 0; i < n_faces; ++i) {
+      typedef typename Mesh::Vertex_index V;
+      const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
+                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
+                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 2])));
+      if(f == Mesh::null_face()) {
+        rep.status = Error_code::NON_MANIFOLD;
+        return rep;
+      }
+      rep.area += double_area3(m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i]])],
+                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 1]])],
+                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 2]])]) / 2;
+    }
+    typedef typename Mesh::Vertex_index V;
+    auto uv = sm.template add_property_map<V, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
+    auto write_corner_uv = [&] {
+      if(!corner_uv) return;
+      corner_uv->resize(3 * n_faces);
+      for(std::size_t c = 0; c < 3 * n_faces; ++c) {
+        const K::Point_2& p = get(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])));
+        (*corner_uv)[c] = {p.x(), p.y()};
+      }
+    };
+    if(border_target) {
+      // the chart's flattening `start_uv` with its border edges given the
+      // target lengths: the seams of the pieces match
+      for(std::size_t c = 0; c < 3 * n_faces; ++c)
+        put(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])),
+            K::Point_2((*start_uv)[c][0], (*start_uv)[c][1]));
+      auto goal = sm.template add_property_map<typename Mesh::Edge_index, double>("e:goal", 0.).first;
+      for(std::size_t i = 0; i < n_faces; ++i)
+        for(auto h : CGAL::halfedges_around_face(halfedge(typename Mesh::Face_index(
+                                                     static_cast<typename Mesh::size_type>(i)), sm), sm)) {
+          int k = 0;
+          while(k < 2 && wedges.wedge_of_corner[3 * i + k] != std::size_t(target(h, sm))) ++k;
+          put(goal, edge(h, sm), (*border_target)[3 * i + k]);
+        }
+      for(auto h : halfedges(sm))  // the border loops, each counted at its smallest halfedge
+        if(is_border(h, sm)) {
+          auto g = next(h, sm);
+          while(g != h && h < g) g = next(g, sm);
+          if(g == h) ++rep.number_of_border_loops;
+        }
+      // the border pulled towards the targets with `weight`
+      auto pull = [&](double weight) {
+        const Optimization_result o = optimize_flattening(
+            sm, uv,
+            parameters::arap_border(
+                Arap_border::KEEP_LENGTHS,
+                parameters::border_edge_length_map(
+                    goal, parameters::border_length_weight(
+                              weight, parameters::area_preservation(m_thresholds.area_preservation)))));
+        if(o && measure(sm, uv, rep)) {
+          rep.optimized = true;
+          write_corner_uv();
+        } else {
+          rep.accepted = false;  // the caller keeps its earlier flattening
+        }
+        return rep;
+      };
+      if(!exact) return pull(pull_weight);
+      // first every border edge at exactly its target length (the border
+      // angles of the flattening kept as closely as the closure allows, the
+      // interior fitted again); where that leaves the thresholds, the border
+      // pulled towards the targets
+      auto exact = sm.template add_property_map<V, K::Point_2>("v:exact", K::Point_2(0, 0)).first;
+      for(auto v : vertices(sm)) put(exact, v, get(uv, v));
+      const Optimization_result e = optimize_flattening(
+          sm, exact,
+          parameters::arap_border(
+              Arap_border::LENGTH_PRESERVED,
+              parameters::number_of_free_iterations(
+                  0, parameters::border_edge_length_map(
+                         goal, parameters::area_preservation(m_thresholds.area_preservation)))));
+      Chart_report exact_rep = rep;
+      if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
+        exact_rep.optimized = exact_rep.lengths_matched = true;
+        for(auto v : vertices(sm)) put(uv, v, get(exact, v));
+        write_corner_uv();
+        return exact_rep;
+      }
+      return pull(pull_weight);
+    }
+    const Flattening_result flat = flatten_patch(sm, uv);
+    rep.number_of_border_loops = flat.border.number_of_loops;
+    if(!flat) {
+      rep.status = flat.status;
+      if(flat.status == Error_code::NOT_CONVERGED) ++m_not_converged;
+      return rep;
+    }
+    if(!measure(sm, uv, rep)) return rep;
+    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
+    // an optimised flattening `map` replaces the flattening of `rep` when it is
+    // accepted and that one is not, or when both are and it has less local
+    // area distortion
+    auto better = [&](const auto& map, const Optimization_result& r) {
+      Chart_report candidate = rep;
+      if(!r || !measure(sm, map, candidate) || !candidate.accepted ||
+         (rep.accepted && !(candidate.local_area_distortion < rep.local_area_distortion)))
+        return false;
+      candidate.optimized = true;
+      rep = candidate;
+      return true;
+    };
+    auto last = uv;       // the latest optimisation started from LPFB+IP
+    bool capped = false;  // whether it stopped at its iteration cap
+    // a final flattening with area-preserving targets that is not accepted
+    // also tries plain ARAP from LPFB+IP: those targets take a chart that
+    // develops onto the plane towards its isometric unfolding only slowly (the
+    // anisotropy of its faces falls to about the share kept at each iteration)
+    const bool plain_too = !paper && corner_uv && m_thresholds.area_preservation > 0;
+    auto lpfb_ip = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:lpfb", K::Point_2(0, 0)).first;
+    if(plain_too)
+      for(auto v : vertices(sm)) put(lpfb_ip, v, get(uv, v));
+    if(!paper && (!rep.accepted || corner_uv)) {
+      // free-boundary ARAP started from LPFB+IP
+      auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
+      for(auto v : vertices(sm)) put(opt, v, get(uv, v));
+      Optimization_result o;
+      if(corner_uv) {
+        o = optimize_flattening(sm, opt, trial_parameters());
+      } else {
+        // a trial gives up where its A_loc is too far above the bound to come
+        // below it by iteration 30
+        const Hopeless_trial<Mesh> hopeless(sm, m_thresholds.max_local_area_distortion, 30);
+        o = optimize_flattening(sm, opt, parameters::iteration_callback([&](std::size_t iterations) {
+          return hopeless(opt, iterations);
+        }, trial_parameters()));
+        if(o.stopped_by_callback) return rep;  // rejected
+      }
+      last = opt;
+      capped = o && o.iterations == 30;
+      if(better(opt, o)) uv = opt;
+      // a trial stops after 30 iterations; a final flattening goes on until it
+      // converges (at most 70 more), kept if it is still accepted and better
+      if(corner_uv && o && o.iterations == 30) {
+        // on a copy: `uv` may now be the same map as `opt`
+        auto more = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:more", K::Point_2(0, 0)).first;
+        for(auto v : vertices(sm)) put(more, v, get(opt, v));
+        const Optimization_result r = optimize_flattening(sm, more, trial_parameters().number_of_iterations(70));
+        last = more;
+        capped = r && r.iterations == 70;
+        if(better(more, r)) uv = more;
+      }
+    }
+    if(plain_too && !rep.accepted) {
+      const Optimization_result o =
+          optimize_flattening(sm, lpfb_ip, trial_parameters(0.).number_of_iterations(100));
+      if(better(lpfb_ip, o)) uv = lpfb_ip;
+    }
+    if(!paper && corner_uv && !rep.accepted) {
+      // a final flattening still outside the thresholds: the optimisation
+      // from LPFB+IP goes on where it stopped at its cap (at most 300
+      // iterations in all), and, for a chart with one border loop, one is
+      // started from LSCM (at most 300 iterations)
+      auto again = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:again", K::Point_2(0, 0)).first;
+      for(int start = 0; start < 2; ++start) {
+        std::size_t iterations = 300;
+        if(start == 0) {
+          if(!capped) continue;  // it converged: going on would give the same map
+          for(auto v : vertices(sm)) put(again, v, get(last, v));
+          iterations = 200;
+        } else {
+          typename Mesh::Halfedge_index border;
+          for(auto h : halfedges(sm))
+            if(is_border(h, sm)) {
+              border = h;
+              break;
+            }
+          if(rep.number_of_border_loops != 1 || border == Mesh::null_halfedge() ||
+             CGAL::Surface_mesh_parameterization::parameterize(
+                 sm, CGAL::Surface_mesh_parameterization::LSCM_parameterizer_3<Mesh>(), border, again) !=
+                 CGAL::Surface_mesh_parameterization::OK)
+            break;
+        }
+        if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(iterations))))
+          for(auto v : vertices(sm)) put(uv, v, get(again, v));  // a copy: `again` is used again
+      }
+    }
+    write_corner_uv();
+    return rep;
+  }
+
+  // a face-index buffer of the mesh's size, all -1, taken from the
+  // evaluator's pool for one trial and given back (all -1 again) after it
+  class Scratch_buffer
+  {
+  public:
+    explicit Scratch_buffer(const Chart_evaluator& e) : m_e(e)
+    {
+      {
+        std::lock_guard<std::mutex> lock(m_e.m_scratch_mutex);
+        if(!m_e.m_scratch.empty()) {
+          m_buffer = std::move(m_e.m_scratch.back());
+          m_e.m_scratch.pop_back();
+        }
+      }
+      if(!m_buffer) m_buffer.reset(new std::vector<long>(num_faces(m_e.m_tm), -1));
+    }
+    ~Scratch_buffer()
+    {
+      std::lock_guard<std::mutex> lock(m_e.m_scratch_mutex);
+      m_e.m_scratch.push_back(std::move(m_buffer));
+    }
+    Scratch_buffer(const Scratch_buffer&) = delete;
+    Scratch_buffer& operator=(const Scratch_buffer&) = delete;
+    std::vector<long>& operator*() { return *m_buffer; }
+
+  private:
+    const Chart_evaluator& m_e;
+    std::unique_ptr<std::vector<long>> m_buffer;
+  };
+
+  // the parameters of the optimisation, with the thresholds' area
+  // preservation or the one given
+  auto trial_parameters(double area_preservation = -1.) const
+  {
+    return parameters::arap_border(
+        m_thresholds.arap_border,
+        parameters::border_length_weight(
+            m_thresholds.border_length_weight,
+            parameters::area_preservation(area_preservation < 0 ? m_thresholds.area_preservation
+                                                                : area_preservation)));
+  }
+
+  // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
+  template <class UVMap>
+  bool measure(const Mesh& sm, const UVMap& uv, Chart_report& rep) const
+  {
+    const Distortion_report<Mesh> d =
+        acceptance_measures(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
+    if(!d) {
+      rep.status = d.status;
+      rep.accepted = false;
+      return false;
+    }
+    rep.area_distortion = d.area_distortion;
+    rep.l2_stretch = d.l2_stretch;
+    rep.local_area_distortion = d.local_area_distortion;
+    rep.overlap = d.overlap;
+    rep.max_border_length_error = 0;
+    for(auto h : halfedges(sm))
+      if(is_border(h, sm)) {
+        const K::Point_3 &p = sm.point(source(h, sm)), &q = sm.point(target(h, sm));
+        const double l3 = std::sqrt(CGAL::squared_distance(p, q));
+        const double l2 = std::sqrt(CGAL::squared_distance(get(uv, source(h, sm)), get(uv, target(h, sm))));
+        rep.max_border_length_error = (std::max)(rep.max_border_length_error, std::abs(l2 - l3) / l3);
+      }
+    rep.accepted = rep.area_distortion <= 100. * m_thresholds.max_area_distortion &&
+                   rep.l2_stretch <= m_thresholds.max_l2_stretch && !rep.overlap &&
+                   (m_thresholds.criterion == Chart_criterion::LPFB_IP ||
+                    rep.local_area_distortion <= 100. * m_thresholds.max_local_area_distortion);
+    return true;
+  }
+
+  const TriangleMesh& m_tm;
+  FIM m_fim;
+  VIM m_vim;
+  const std::vector<std::array<double, 3>>& m_points;
+  Merge_thresholds m_thresholds;
+  mutable std::atomic<std::size_t> m_not_converged{0};
+  mutable std::mutex m_scratch_mutex;
+  mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
+  Flattening_cache<Chart_report>* m_cache = nullptr;
+};
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_INTERNAL_CHART_EVALUATOR_H
