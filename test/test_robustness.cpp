@@ -427,6 +427,83 @@ BOOST_AUTO_TEST_CASE(fuzzer_findings_stay_fixed)
   BOOST_TEST(area == 3., boost::test_tools::tolerance(1e-12));
 }
 
+// The repair skips the orientation of a soup that already is an oriented
+// manifold mesh: its own test says what CGAL's is_polygon_soup_a_polygon_mesh()
+// says, on crafted soups, on random mutations of a mesh's soup and on CGAL's
+// meshes, and orient_polygon_soup() leaves every soup it accepts as it is.
+BOOST_AUTO_TEST_CASE(oriented_manifold_soup_test_is_the_pmp_one)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto same = [](const std::vector<Polygon>& polygons, std::size_t points, const std::string& what) {
+    const bool ours = QD::internal::is_oriented_manifold_soup(polygons, points);
+    BOOST_TEST(ours == PMP::is_polygon_soup_a_polygon_mesh(polygons), what);
+    return ours;
+  };
+  // a tetrahedron, and what breaks it
+  const std::vector<Polygon> tet = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  BOOST_TEST(same(tet, 4, "tetrahedron"));
+  BOOST_TEST(same({{0, 1, 2}, {0, 2, 3}}, 4, "square"));
+  BOOST_TEST(same({{0, 1, 2, 3}, {0, 4, 1}}, 5, "quad and triangle"));
+  BOOST_TEST(!same({{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}, 4, "one face flipped"));
+  BOOST_TEST(!same({{0, 1, 2}, {0, 1, 2}}, 3, "duplicated polygon"));
+  BOOST_TEST(!same({{0, 1, 2}, {1, 0, 3}, {1, 0, 4}}, 5, "edge with three polygons"));
+  BOOST_TEST(!same({{0, 1, 2}, {0, 3, 4}}, 5, "bow tie"));
+  BOOST_TEST(!same({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {3, 5, 4}, {3, 4, 6}, {4, 5, 6}, {5, 3, 6}}, 7,
+                   "two tetrahedra sharing a vertex"));
+  BOOST_TEST(!same({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {3, 4, 5}}, 6, "closed and open fans at a vertex"));
+  BOOST_TEST(!same({{0, 1, 1}}, 2, "a corner twice"));
+  BOOST_TEST(!same({{0, 1}}, 2, "two corners"));
+  BOOST_TEST(!QD::internal::is_oriented_manifold_soup(std::vector<Polygon>{{0, 1, 5}}, 3));  // index beyond the points
+
+  // random mutations of a sphere's soup: flipped, removed, duplicated
+  // polygons, vertices identified, triangles added
+  const Soup sphere = polar(5, 9, sphere_cap(2.0));
+  std::vector<Polygon> base;
+  for(const Tri& t : sphere.triangles) base.push_back({t[0], t[1], t[2]});
+  const std::size_t n = sphere.points.size();
+  BOOST_TEST(same(base, n, "sphere cap"));
+  std::mt19937 rng(7);
+  std::size_t meshes = 0;
+  for(int round = 0; round < 400; ++round) {
+    std::vector<Polygon> soup = base;
+    const int mutations = 1 + round % 3;
+    for(int m = 0; m < mutations; ++m) {
+      const std::size_t i = rng() % soup.size();
+      switch(rng() % 5) {
+      case 0: std::reverse(soup[i].begin(), soup[i].end()); break;
+      case 1: soup.erase(soup.begin() + static_cast<long>(i)); break;
+      case 2: soup.push_back(soup[i]); break;
+      case 3: {
+        const std::size_t from = rng() % n, to = rng() % n;
+        for(Polygon& p : soup)
+          for(std::size_t& v : p)
+            if(v == from) v = to;
+        break;
+      }
+      default: soup.push_back({rng() % n, rng() % n, rng() % n}); break;
+      }
+      if(soup.empty()) soup = base;
+    }
+    if(same(soup, n, "mutation " + std::to_string(round))) ++meshes;
+  }
+  BOOST_TEST(meshes > 20u);  // removals keep a mesh: both answers are seen
+
+#ifdef CGAL_QD_DEMO_MESH_DIR
+  // CGAL's meshes: the same answer, and the orientation leaves them as they are
+  for(const std::string name : {"fandisk.off", "elephant.off", "cow.off", "mannequin-devil.off", "holes.off"}) {
+    std::vector<Point> points;
+    std::vector<Polygon> polygons;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(CGAL_QD_DEMO_MESH_DIR) + "/" + name, points, polygons));
+    BOOST_TEST(same(polygons, points.size(), name));
+    std::vector<Point> oriented_points = points;
+    std::vector<Polygon> oriented = polygons;
+    PMP::orient_polygon_soup(oriented_points, oriented);
+    BOOST_TEST((oriented == polygons), name);
+    BOOST_TEST((oriented_points == points), name);
+  }
+#endif
+}
+
 // Random mutations of valid files in every format: the reader and the repair
 // never throw or crash, and whatever they accept is a usable mesh.
 BOOST_AUTO_TEST_CASE(fuzzed_files_give_a_usable_mesh_or_a_named_error)

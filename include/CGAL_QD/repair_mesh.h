@@ -13,6 +13,7 @@
 /// file and calls it.
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/internal/oriented_manifold_soup.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/parameters.h>
 
@@ -326,7 +327,8 @@ Mesh_inspection inspect_mesh(const FaceGraph& tm, const NamedParameters& np = CG
 /// order: points at the same position are merged; polygons with fewer than 3
 /// distinct corners are removed, then duplicated polygons and unused points;
 /// the soup is oriented consistently, duplicating the points where it is not
-/// manifold (`orient_polygon_soup()`); polygons with more than 3 corners are
+/// manifold (`orient_polygon_soup()`, skipped where the soup already is a
+/// consistently oriented manifold mesh, which it would leave as it is); polygons with more than 3 corners are
 /// cut into triangles by ear clipping in the plane of their Newell normal (a
 /// fan where a polygon has no normal or crosses itself); zero-area triangles
 /// are removed (`remove_degenerate_faces()`) with the vertices they leave
@@ -380,8 +382,11 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
   r.isolated_points_removed = PMP::remove_isolated_points_in_polygon_soup(points, polygons);
   if(polygons.empty()) return fail(Error_code::EMPTY_MESH, "no polygon has 3 distinct corners");
 
-  // orientation: count the polygons whose corner order the orientation reversed
-  {
+  // orientation: count the polygons whose corner order the orientation
+  // reversed; nothing to do where the soup already is an oriented manifold
+  // mesh (which `orient_polygon_soup()` would leave as it is)
+  const bool oriented_manifold = internal::is_oriented_manifold_soup(polygons, points.size());
+  if(!oriented_manifold) {
     const std::size_t before = points.size();
     std::vector<std::array<Point, 2>> first_edge;
     first_edge.reserve(polygons.size());
@@ -398,7 +403,7 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
         }
     }
   }
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  if(!oriented_manifold && !PMP::is_polygon_soup_a_polygon_mesh(polygons))
     return fail(Error_code::NON_MANIFOLD, "the polygons cannot be made a manifold mesh");
   PMP::polygon_soup_to_polygon_mesh(points, polygons, pm, CGAL::parameters::default_values(), np);
 

@@ -1,0 +1,99 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_INTERNAL_ORIENTED_MANIFOLD_SOUP_H
+#define CGAL_QD_INTERNAL_ORIENTED_MANIFOLD_SOUP_H
+
+// Whether a polygon soup already is a consistently oriented manifold mesh,
+// the test of `CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`
+// on sorted arrays instead of node-based sets: every polygon has at least 3
+// corners and no vertex twice; no oriented edge is used twice (so an edge has
+// at most two polygons, which run along it in opposite directions); and the
+// polygons around every vertex form one fan, closed or open. Such a soup is
+// what `orient_polygon_soup()` leaves as it is; a mesh read from a file
+// usually is one, and the repair then skips the orientation.
+
+#include <algorithm>
+#include <cstddef>
+#include <tuple>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// `polygons`: sequences of indices below `number_of_points`
+template <class PolygonRange>
+bool is_oriented_manifold_soup(const PolygonRange& polygons, std::size_t number_of_points)
+{
+  const std::size_t none = std::size_t(-1);
+  // the corners, polygon by polygon: corner c is at vertex[c]; its polygon's
+  // corners are first[p] .. first[p + 1]
+  std::vector<std::size_t> first(1, 0), vertex, polygon_of;
+  for(const auto& polygon : polygons) {
+    const std::size_t n = polygon.size();
+    if(n < 3) return false;
+    for(const auto id : polygon) {
+      if(static_cast<std::size_t>(id) >= number_of_points) return false;
+      vertex.push_back(static_cast<std::size_t>(id));
+      polygon_of.push_back(first.size() - 1);
+    }
+    first.push_back(vertex.size());
+    std::vector<std::size_t> sorted(vertex.end() - n, vertex.end());
+    std::sort(sorted.begin(), sorted.end());
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;  // a vertex twice
+  }
+  const std::size_t nc = vertex.size();
+  auto next = [&](std::size_t c) { return c + 1 == first[polygon_of[c] + 1] ? first[polygon_of[c]] : c + 1; };
+  auto prev = [&](std::size_t c) { return c == first[polygon_of[c]] ? first[polygon_of[c] + 1] - 1 : c - 1; };
+  // the oriented edges (from the corner's vertex to the next corner's), sorted
+  typedef std::tuple<std::size_t, std::size_t, std::size_t> Edge;  // (from, to, corner)
+  std::vector<Edge> edges(nc);
+  for(std::size_t c = 0; c < nc; ++c) edges[c] = Edge(vertex[c], vertex[next(c)], c);
+  std::sort(edges.begin(), edges.end());
+  for(std::size_t i = 1; i < nc; ++i)
+    if(std::get<0>(edges[i]) == std::get<0>(edges[i - 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i - 1]))
+      return false;  // an oriented edge used twice
+  // the corner whose edge runs from u to v, or none
+  auto leaving = [&](std::size_t u, std::size_t v) {
+    const auto it = std::lower_bound(edges.begin(), edges.end(), Edge(u, v, 0));
+    return it != edges.end() && std::get<0>(*it) == u && std::get<1>(*it) == v ? std::get<2>(*it) : none;
+  };
+  // every vertex: one walk around it from its first corner reaches all of its corners
+  std::vector<char> visited(nc, 0), walked(number_of_points, 0);
+  for(std::size_t c = 0; c < nc; ++c) {
+    if(visited[c]) continue;
+    const std::size_t v = vertex[c];
+    if(walked[v]) return false;  // a second fan at v
+    walked[v] = 1;
+    visited[c] = 1;
+    // forward: across the edge from v to the next corner's vertex
+    bool closed = false;
+    for(std::size_t cur = c;;) {
+      const std::size_t across = leaving(vertex[next(cur)], v);
+      if(across == none) break;
+      const std::size_t at_v = next(across);
+      if(at_v == c) {
+        closed = true;
+        break;
+      }
+      if(visited[at_v]) return false;
+      visited[at_v] = 1;
+      cur = at_v;
+    }
+    if(closed) continue;
+    // backward: across the edge from the previous corner's vertex to v
+    for(std::size_t cur = c;;) {
+      const std::size_t at_v = leaving(v, vertex[prev(cur)]);
+      if(at_v == none) break;
+      if(visited[at_v]) return false;
+      visited[at_v] = 1;
+      cur = at_v;
+    }
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_INTERNAL_ORIENTED_MANIFOLD_SOUP_H
