@@ -328,8 +328,9 @@ Mesh_inspection inspect_mesh(const FaceGraph& tm, const NamedParameters& np = CG
 /// distinct corners are removed, then duplicated polygons and unused points;
 /// the soup is oriented consistently, duplicating the points where it is not
 /// manifold (`orient_polygon_soup()`, skipped where the soup already is a
-/// consistently oriented manifold mesh, which it would leave as it is); polygons with more than 3 corners are
-/// cut into triangles by ear clipping in the plane of their Newell normal (a
+/// consistently oriented manifold mesh, which it would leave as it is);
+/// polygons with more than 3 corners are cut into triangles by ear clipping in
+/// the plane of their Newell normal (a
 /// fan where a polygon has no normal or crosses itself); zero-area triangles
 /// are removed (`remove_degenerate_faces()`) with the vertices they leave
 /// isolated, and a mesh that this leaves invalid is built again from its faces.

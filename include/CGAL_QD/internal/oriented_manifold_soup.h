@@ -28,7 +28,10 @@ bool is_oriented_manifold_soup(const PolygonRange& polygons, std::size_t number_
   const std::size_t none = std::size_t(-1);
   // the corners, polygon by polygon: corner c is at vertex[c]; its polygon's
   // corners are first[p] .. first[p + 1]
-  std::vector<std::size_t> first(1, 0), vertex, polygon_of;
+  std::vector<std::size_t> first(1, 0), vertex, polygon_of, sorted;
+  first.reserve(polygons.size() + 1);
+  vertex.reserve(3 * polygons.size());
+  polygon_of.reserve(3 * polygons.size());
   for(const auto& polygon : polygons) {
     const std::size_t n = polygon.size();
     if(n < 3) return false;
@@ -38,7 +41,7 @@ bool is_oriented_manifold_soup(const PolygonRange& polygons, std::size_t number_
       polygon_of.push_back(first.size() - 1);
     }
     first.push_back(vertex.size());
-    std::vector<std::size_t> sorted(vertex.end() - n, vertex.end());
+    sorted.assign(vertex.end() - static_cast<std::ptrdiff_t>(n), vertex.end());
     std::sort(sorted.begin(), sorted.end());
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;  // a vertex twice
   }
