@@ -19,6 +19,11 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#include <emmintrin.h>
+#define CGAL_QD_ARAP_SSE2
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -128,21 +133,21 @@ public:
       m_target[f] = {a, b, c, d};
     }
     double energy = 0;
-    for(std::size_t f = 0; f < nf; ++f) {
-      Matrix_2& T = m_target[f];
-      const double a = T[0], b = T[1], c = T[2], d = T[3];
-      // M = [[a, b], [c, d]] = q Rot + r Ref (see `target_of_determinant_one`):
-      // the closest rotation is Rot
-      const double E = (a + d) / 2, F = (a - d) / 2, G = (c + b) / 2, H = (c - b) / 2;
-      const double q = std::sqrt(E * E + H * H);
-      if(!(m_alpha > 0) || !target_of_determinant_one(E, F, G, H, q, T))
-        T = q > 0 ? Matrix_2{E / q, -H / q, H / q, E / q} : Matrix_2{1., 0., 0., 1.};
-      const double k = m_kappa[f][0];
-      const double ea = a - k * T[0], eb = b - k * T[1], ec = c - k * T[2], ed = d - k * T[3];
-      energy += (ea * ea + eb * eb + ec * ec + ed * ed) * m_kappa[f][1];
-    }
+    std::size_t f = 0;
+#ifdef CGAL_QD_ARAP_SSE2
+    if(m_two_lanes && (m_alpha == 0 || m_alpha == 0.5 || m_alpha == 1.))
+      for(; f + 1 < nf; f += 2) energy = two_targets(f, energy);
+#endif
+    for(; f < nf; ++f) energy += target_and_energy(f);
     return (energy + spring_energy(u)) / m_area;
   }
+
+  // every face's target map from the last `local_step()`, row by row
+  const std::vector<std::array<double, 4>>& targets() const { return m_target; }
+
+  // whether `local_step()` may find the targets of two faces at once (where
+  // SSE2 is available; the same result, bit for bit)
+  void set_two_lanes(bool on) { m_two_lanes = on; }
 
   // The positions that minimise the energy for the current rotations.
   bool global_step(const std::vector<Vector_2>& u, std::vector<Vector_2>& out)
@@ -208,6 +213,87 @@ public:
 private:
   typedef std::array<double, 4> Matrix_2;  // row by row
 
+  // The target of face f from M (held in its target) and the face's energy term.
+  double target_and_energy(std::size_t f)
+  {
+    Matrix_2& T = m_target[f];
+    const double a = T[0], b = T[1], c = T[2], d = T[3];
+    // M = [[a, b], [c, d]] = q Rot + r Ref (see `target_of_determinant_one`):
+    // the closest rotation is Rot
+    const double E = (a + d) / 2, F = (a - d) / 2, G = (c + b) / 2, H = (c - b) / 2;
+    const double q = std::sqrt(E * E + H * H);
+    if(!(m_alpha > 0) || !target_of_determinant_one(E, F, G, H, q, T))
+      T = q > 0 ? Matrix_2{E / q, -H / q, H / q, E / q} : Matrix_2{1., 0., 0., 1.};
+    const double k = m_kappa[f][0];
+    const double ea = a - k * T[0], eb = b - k * T[1], ec = c - k * T[2], ed = d - k * T[3];
+    return (ea * ea + eb * eb + ec * ec + ed * ed) * m_kappa[f][1];
+  }
+
+#ifdef CGAL_QD_ARAP_SSE2
+  // `target_and_energy()` for faces f and f + 1 at once, in SSE2 lanes: the
+  // same operations in the same order, so the same bits (the square roots and
+  // divisions, most of the cost, run two at a time); the two energy terms
+  // are added to `energy` in turn. For alpha 0, 0.5 or 1.
+  double two_targets(std::size_t f, double energy)
+  {
+    double* T0 = m_target[f].data();
+    double* T1 = m_target[f + 1].data();
+    const __m128d ab0 = _mm_loadu_pd(T0), ab1 = _mm_loadu_pd(T1);
+    const __m128d cd0 = _mm_loadu_pd(T0 + 2), cd1 = _mm_loadu_pd(T1 + 2);
+    const __m128d a = _mm_unpacklo_pd(ab0, ab1), b = _mm_unpackhi_pd(ab0, ab1);
+    const __m128d c = _mm_unpacklo_pd(cd0, cd1), d = _mm_unpackhi_pd(cd0, cd1);
+    const __m128d half = _mm_set1_pd(0.5), one = _mm_set1_pd(1.), zero = _mm_setzero_pd();
+    // x / 2 and x * 0.5 are the same number
+    const __m128d E = _mm_mul_pd(_mm_add_pd(a, d), half), F = _mm_mul_pd(_mm_sub_pd(a, d), half);
+    const __m128d G = _mm_mul_pd(_mm_add_pd(c, b), half), H = _mm_mul_pd(_mm_sub_pd(c, b), half);
+    const __m128d q = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(E, E), _mm_mul_pd(H, H)));
+    // the rotation, or the identity where q is 0
+    const __m128d q_positive = _mm_cmpgt_pd(q, zero);
+    const __m128d Eq = _mm_div_pd(E, q), Hq = _mm_div_pd(H, q);
+    const __m128d minus_Hq = _mm_xor_pd(Hq, _mm_set1_pd(-0.));
+    __m128d t0 = blend(q_positive, Eq, one), t1 = blend(q_positive, minus_Hq, zero);
+    __m128d t2 = blend(q_positive, Hq, zero), t3 = t0;
+    if(m_alpha > 0) {
+      const __m128d r = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(F, F), _mm_mul_pd(G, G)));
+      const __m128d s1 = _mm_add_pd(q, r), s2 = _mm_sub_pd(q, r);
+      const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(s2, _mm_mul_pd(_mm_set1_pd(1e-12), s1)), _mm_cmpgt_pd(r, zero));
+      if(_mm_movemask_pd(ok) != 0) {
+        __m128d t = _mm_div_pd(s1, s2);
+        t = m_alpha == 1. ? _mm_sqrt_pd(t) : _mm_sqrt_pd(_mm_sqrt_pd(t));
+        t = _mm_min_pd(t, _mm_set1_pd(2.));
+        const __m128d k = _mm_div_pd(half, _mm_mul_pd(_mm_mul_pd(t, q), r));
+        const __m128d tt = _mm_mul_pd(t, t);
+        const __m128d p = _mm_mul_pd(_mm_mul_pd(_mm_add_pd(tt, one), r), k);
+        const __m128d m = _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(tt, one), q), k);
+        t0 = blend(ok, _mm_add_pd(_mm_mul_pd(p, E), _mm_mul_pd(m, F)), t0);
+        t1 = blend(ok, _mm_sub_pd(_mm_mul_pd(m, G), _mm_mul_pd(p, H)), t1);
+        t2 = blend(ok, _mm_add_pd(_mm_mul_pd(p, H), _mm_mul_pd(m, G)), t2);
+        t3 = blend(ok, _mm_sub_pd(_mm_mul_pd(p, E), _mm_mul_pd(m, F)), t3);
+      }
+    }
+    _mm_storeu_pd(T0, _mm_unpacklo_pd(t0, t1));
+    _mm_storeu_pd(T1, _mm_unpackhi_pd(t0, t1));
+    _mm_storeu_pd(T0 + 2, _mm_unpacklo_pd(t2, t3));
+    _mm_storeu_pd(T1 + 2, _mm_unpackhi_pd(t2, t3));
+    // the energy terms
+    const __m128d kk0 = _mm_loadu_pd(m_kappa[f].data()), kk1 = _mm_loadu_pd(m_kappa[f + 1].data());
+    const __m128d kappa = _mm_unpacklo_pd(kk0, kk1), inverse = _mm_unpackhi_pd(kk0, kk1);
+    const __m128d ea = _mm_sub_pd(a, _mm_mul_pd(kappa, t0)), eb = _mm_sub_pd(b, _mm_mul_pd(kappa, t1));
+    const __m128d ec = _mm_sub_pd(c, _mm_mul_pd(kappa, t2)), ed = _mm_sub_pd(d, _mm_mul_pd(kappa, t3));
+    const __m128d sum = _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(ea, ea), _mm_mul_pd(eb, eb)), _mm_mul_pd(ec, ec)),
+                                   _mm_mul_pd(ed, ed));
+    const __m128d e = _mm_mul_pd(sum, inverse);
+    energy += _mm_cvtsd_f64(e);
+    return energy + _mm_cvtsd_f64(_mm_unpackhi_pd(e, e));
+  }
+
+  // mask ? x : y, lane by lane
+  static __m128d blend(__m128d mask, __m128d x, __m128d y)
+  {
+    return _mm_or_pd(_mm_and_pd(mask, x), _mm_andnot_pd(mask, y));
+  }
+#endif
+
   // Sets `T` to the target U diag(t, 1 / t) V^T for the map M = [[a, b],
   // [c, d]] = U diag(s1, s2) V^T, s1 >= |s2|; returns false, leaving `T`
   // alone, where M is flipped or degenerate (s2 <= 0) or a similarity (the
@@ -267,6 +353,7 @@ private:
   std::vector<std::array<double, 2>> m_kappa;
   double m_alpha;                  // area preservation
   std::vector<Matrix_2> m_target;  // every face's target map
+  bool m_two_lanes = true;
   std::vector<long> m_row;
   std::size_t m_unknowns = 0;
   double m_area = 0;
