@@ -106,14 +106,15 @@ inline constexpr double seam_pull_weight = 30.;
 
 // Flattens the charts `chart` (compact ids by face index, n charts) cut open
 // along `seams`, and fills the chart and seam fields of `result` (whose
-// `points` hold the points by vertex index).
+// `points` hold the points by vertex index). With `fit_only_if_accepted`, the
+// seams are fitted to common lengths only when every chart is accepted.
 template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
 void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, const VIM& vim, const HIM& him,
                           const std::vector<std::size_t>& chart, std::size_t n,
                           const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
                           const Merge_thresholds& thresholds, const std::function<void(const char*, double)>& progress,
                           Chart_flattening_result<TriangleMesh>& result,
-                          Flattening_cache<Chart_report>* cache = nullptr)
+                          Flattening_cache<Chart_report>* cache = nullptr, bool fit_only_if_accepted = false)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -183,7 +184,9 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     const std::array<double, 2>&p = result.corner_uv[3 * i + k], &q = result.corner_uv[3 * i + (k + 2) % 3];
     return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
   };
-  if(thresholds.criterion != Chart_criterion::LPFB_IP) {
+  const bool all_accepted =
+      std::all_of(result.charts.begin(), result.charts.end(), [](const Chart_report& c) { return c.accepted; });
+  if(thresholds.criterion != Chart_criterion::LPFB_IP && (all_accepted || !fit_only_if_accepted)) {
     // the two sides of every seam edge get a common length: every chart is
     // fitted exactly to the mean of the two sides of its curves (every border
     // edge at its share), or, where that leaves the thresholds, keeps its
@@ -361,11 +364,13 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   if(progress) progress("flatten", 1.);
 }
 
-// `flatten_charts()`, with flattenings looked up in `cache` (nullptr: none)
+// `flatten_charts()`, with flattenings looked up in `cache` (nullptr: none);
+// with `fit_only_if_accepted`, the seams are not fitted where a chart is rejected
 template <class ConcurrencyTag, class TriangleMesh, class FaceChartMap, class NamedParameters>
 Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm, const FaceChartMap& face_chart,
                                                           const NamedParameters& np,
-                                                          Flattening_cache<Chart_report>* cache)
+                                                          Flattening_cache<Chart_report>* cache,
+                                                          bool fit_only_if_accepted = false)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -398,7 +403,8 @@ Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm
   }
   result.points = points_by_index(tm, vpm, vim);
   flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams,
-                                       merge_thresholds_from<TriangleMesh>(np), progress, result, cache);
+                                       merge_thresholds_from<TriangleMesh>(np), progress, result, cache,
+                                       fit_only_if_accepted);
   return result;
 }
 

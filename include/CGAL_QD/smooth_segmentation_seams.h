@@ -70,12 +70,15 @@ struct Seam_smoothing_result
 /// (32 rounds). After each try the charts are flattened again
 /// (`flatten_charts()`; a chart that the try left as it was takes its
 /// flattening from the try before); the borders and cuts of a chart that
-/// leaves the thresholds, the border between two charts whose seam no longer
-/// matches in length where it did (its two sides within 0.5 %) or whose sides
-/// end further apart than the worst seam of the input, and the borders and
-/// cuts of a chart with a cut that stops matching, are smoothed less at the
-/// next try (8 rounds, then 2: the staircase goes and the course of the seam
-/// stays), then left along the edges; at most 8 tries. The last try with every
+/// leaves the thresholds are smoothed less at the next try (8 rounds, then 2:
+/// the staircase goes and the course of the seam stays), then left along the
+/// edges. Where every chart is accepted, the seams are fitted to common
+/// lengths as `flatten_charts()` does, and the border between two charts whose
+/// seam no longer matches in length where it did (its two sides within 0.5 %)
+/// or whose sides end further apart than the worst seam of the input, and the
+/// borders and cuts of a chart with a cut that stops matching (or with such a
+/// border that already follows the edges), are smoothed less in the same way;
+/// each curve one step per try, at most 8 tries. The last try with every
 /// chart accepted is kept.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
@@ -166,9 +169,32 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   std::map<Chart_pair, double> unmatched_before;
   for(const Chart_pair& p : segmentation.unmatched_seams) unmatched_before[p] = segmentation.max_seam_length_mismatch;
 
+  // a cut, or a border along the edges already, that stops matching: the
+  // curves of its charts still smoothed go into `less`; where there is none,
+  // those of the charts next to them, ring by ring
+  auto lower_around = [&](const Chart_pair& pair, std::set<Chart_pair>& less) {
+    std::set<std::size_t> ring = {pair.first, pair.second}, seen = ring;
+    while(!ring.empty()) {
+      bool found = false;
+      for(std::size_t c : ring)
+        for(const Chart_pair& p : pairs_of[c])
+          if(level[p] < along_edges) {
+            less.insert(p);
+            found = true;
+          }
+      if(found) return;
+      std::set<std::size_t> next;
+      for(std::size_t c : ring)
+        for(const Chart_pair& p : pairs_of[c])
+          for(std::size_t x : {p.first, p.second})
+            if(seen.insert(x).second) next.insert(x);
+      ring.swap(next);
+    }
+  };
+
   // the charts that a try leaves as they were flatten as they did at the try before
   internal::Flattening_cache<Chart_report> cache;
-  std::unique_ptr<Try> best;  // the last try with every chart accepted
+  std::unique_ptr<Try> best;  // the try kept: every chart accepted, the most seams matched
   Chart_flattening_result<TriangleMesh> best_flattening;
   double zigzag_before = 1;
 
@@ -282,32 +308,38 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
                                                       CGAL::parameters::edge_is_constrained_map(cut)))))));
     cache.next_generation();
     Chart_flattening_result<TriangleMesh> f =
-        internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache);
+        internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache, true);
     ++result.tries;
     if(!f || f.number_of_charts != segmentation.number_of_charts) break;
     if(!best) result.rejected_charts = f.rejected_charts;
-    // the borders and cuts of a rejected chart are smoothed less, and so is
-    // a seam whose sides no longer match, or differ by more than the worst
-    // seam did before the smoothing (for a cut inside a chart: the borders
-    // and cuts of the chart)
-    bool changed = false;
+    // the borders and cuts of a rejected chart are smoothed less; where every
+    // chart is accepted (the seams were fitted only then), so is a seam whose
+    // sides no longer match, or differ by more than the worst seam did before
+    // the smoothing (for a cut inside a chart, or a border along the edges
+    // already: the borders and cuts of its charts)
+    std::set<Chart_pair> less;  // each smoothed less once
     for(std::size_t k = 0; k < f.charts.size(); ++k)
-      if(!f.charts[k].accepted)
-        for(const Chart_pair& p : pairs_of[k]) changed = smooth_less(p) || changed;
-    for(std::size_t i = 0; i < f.unmatched_seams.size(); ++i) {
+      if(!f.charts[k].accepted) less.insert(pairs_of[k].begin(), pairs_of[k].end());
+    for(std::size_t i = 0; i < f.unmatched_seams.size() && f.rejected_charts == 0; ++i) {
       const Chart_pair& pair = f.unmatched_seams[i];
       const auto before = unmatched_before.find(pair);
       if(before != unmatched_before.end() &&
          f.unmatched_seam_mismatch[i] <= (std::max)(before->second, segmentation.max_seam_length_mismatch))
         continue;
-      if(pair.first != pair.second) {
-        changed = smooth_less(pair) || changed;
+      if(pair.first != pair.second && level[pair] < along_edges) {
+        less.insert(pair);
       } else {
-        for(const Chart_pair& p : pairs_of[pair.first]) changed = smooth_less(p) || changed;
+        lower_around(pair, less);
       }
     }
-    // kept if every chart is accepted
-    if(f.rejected_charts == 0) {
+    bool changed = false;
+    for(const Chart_pair& p : less) changed = smooth_less(p) || changed;
+    // kept if every chart is accepted, and more seams match than in the try
+    // kept before (as many: if the seams zigzag less)
+    if(f.rejected_charts == 0 &&
+       (!best || f.seam_curves_matched > best_flattening.seam_curves_matched ||
+        (f.seam_curves_matched == best_flattening.seam_curves_matched &&
+         f.seam_zigzag < best_flattening.seam_zigzag))) {
       result.smoothing = sr;
       best = std::move(trial);
       best_flattening = std::move(f);
