@@ -73,13 +73,14 @@ struct Seam_smoothing_result
 /// leaves the thresholds are smoothed less at the next try (8 rounds, then 2:
 /// the staircase goes and the course of the seam stays), then left along the
 /// edges. Where every chart is accepted, the seams are fitted to common
-/// lengths as `flatten_charts()` does, and the border between two charts whose
-/// seam no longer matches in length where it did (its two sides within 0.5 %)
-/// or whose sides end further apart than the worst seam of the input, and the
-/// borders and cuts of a chart with a cut that stops matching (or with such a
-/// border that already follows the edges), are smoothed less in the same way;
-/// each curve one step per try, at most 8 tries. The last try with every
-/// chart accepted is kept.
+/// lengths as `flatten_charts()` does, and a seam (a border between two
+/// charts, or the cuts of a chart) that no longer matches in length where it
+/// did (its two sides within 0.5 %) or whose sides end further apart than the
+/// worst seam of the input is smoothed less in the same way; once it follows
+/// the edges, the curves of its charts are (or, where those follow the edges
+/// too, of the charts next to them). Each curve goes one step per try, at most
+/// 10 tries. The try kept is the one with every chart accepted and the most
+/// seams matched (as many: the smallest zigzag).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag` (for the flattenings); the result is the same
@@ -130,7 +131,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
 
   auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
   const std::array<std::size_t, 3> strengths = {{32, 8, 2}};  // smoothing rounds; level 3: along the edges
-  const int max_tries = 8;
+  const int max_tries = 10;
   const std::size_t along_edges = strengths.size();
 
   // the cuts inside charts of the input
@@ -169,9 +170,9 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   std::map<Chart_pair, double> unmatched_before;
   for(const Chart_pair& p : segmentation.unmatched_seams) unmatched_before[p] = segmentation.max_seam_length_mismatch;
 
-  // a cut, or a border along the edges already, that stops matching: the
-  // curves of its charts still smoothed go into `less`; where there is none,
-  // those of the charts next to them, ring by ring
+  // a seam along the edges already that stops matching: the curves of its
+  // charts still smoothed go into `less`; where there is none, those of the
+  // charts next to them, ring by ring
   auto lower_around = [&](const Chart_pair& pair, std::set<Chart_pair>& less) {
     std::set<std::size_t> ring = {pair.first, pair.second}, seen = ring;
     while(!ring.empty()) {
@@ -315,8 +316,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     // the borders and cuts of a rejected chart are smoothed less; where every
     // chart is accepted (the seams were fitted only then), so is a seam whose
     // sides no longer match, or differ by more than the worst seam did before
-    // the smoothing (for a cut inside a chart, or a border along the edges
-    // already: the borders and cuts of its charts)
+    // the smoothing (a border, or the cuts of a chart; once along the edges,
+    // the curves around it)
     std::set<Chart_pair> less;  // each smoothed less once
     for(std::size_t k = 0; k < f.charts.size(); ++k)
       if(!f.charts[k].accepted) less.insert(pairs_of[k].begin(), pairs_of[k].end());
@@ -326,7 +327,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       if(before != unmatched_before.end() &&
          f.unmatched_seam_mismatch[i] <= (std::max)(before->second, segmentation.max_seam_length_mismatch))
         continue;
-      if(pair.first != pair.second && level[pair] < along_edges) {
+      if(level[pair] < along_edges) {
         less.insert(pair);
       } else {
         lower_around(pair, less);
