@@ -154,7 +154,8 @@ public:
   {
     out = u;
     if(m_unknowns == 0) return true;
-    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m_unknowns), 2);
+    Eigen::MatrixXd& B = m_rhs;  // kept between iterations: no allocation per step
+    B.setZero(static_cast<Eigen::Index>(m_unknowns), 2);
     auto add_edge = [&](std::size_t i, std::size_t j, double w, double tx, double ty) {
       // w |(u_i - u_j) - t|^2
       const long ri = m_row[i], rj = m_row[j];
@@ -189,7 +190,7 @@ public:
         const double dx = u[i][0] - u[j][0], dy = u[i][1] - u[j][1], n = std::sqrt(dx * dx + dy * dy);
         if(n > 0) add_edge(i, j, m_lambda, m_length[e] * dx / n, m_length[e] * dy / n);
       }
-    Eigen::MatrixXd X;
+    Eigen::MatrixXd& X = m_solution;
     if(!m_solver.solve(B, X) || !X.allFinite()) return false;
     for(std::size_t i = 0; i < m_nv; ++i)
       if(m_row[i] >= 0) out[i] = {X(m_row[i], 0), X(m_row[i], 1)};
@@ -354,6 +355,7 @@ private:
   double m_alpha;                  // area preservation
   std::vector<Matrix_2> m_target;  // every face's target map
   bool m_two_lanes = true;
+  Eigen::MatrixXd m_rhs, m_solution;  // of the global step
   std::vector<long> m_row;
   std::size_t m_unknowns = 0;
   double m_area = 0;

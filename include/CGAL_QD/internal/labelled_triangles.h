@@ -68,7 +68,21 @@ inline Labelled_topology labelled_topology(const std::vector<Labelled_triangle>&
       }
     }
   }
-  std::sort(edge_tri.begin(), edge_tri.end());
+  // sorted: bucketed by the smaller node (the key's high half), then each
+  // bucket, a handful of edges, sorted; the order of one std::sort, in
+  // linear time instead of n log n (this runs for every curve smoothed)
+  {
+    std::vector<std::size_t> start(number_of_nodes + 1, 0);
+    for(const auto& e : edge_tri) ++start[std::size_t(e.first >> 32) + 1];
+    for(std::size_t x = 0; x < number_of_nodes; ++x) start[x + 1] += start[x];
+    std::vector<std::pair<std::uint64_t, std::size_t>> sorted(edge_tri.size());
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(const auto& e : edge_tri) sorted[fill[std::size_t(e.first >> 32)]++] = e;
+    for(std::size_t x = 0; x < number_of_nodes; ++x)
+      if(start[x + 1] - start[x] > 1)
+        std::sort(sorted.begin() + std::ptrdiff_t(start[x]), sorted.begin() + std::ptrdiff_t(start[x + 1]));
+    edge_tri.swap(sorted);
+  }
   // union-find on the triangles (components through edges) and on the nodes (border loops)
   Union_find components(tris.size()), loops(number_of_nodes);
   std::vector<std::size_t> border_degree(number_of_nodes, 0);
