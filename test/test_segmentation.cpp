@@ -1745,6 +1745,43 @@ BOOST_AUTO_TEST_CASE(flatten_charts_starts_the_optimisation_again_where_lpfb_ip_
 #ifdef CGAL_QD_DEMO_MESH_DIR
 // the seams of elephant's segmentation, smoothed by the library: the refined
 // mesh comes out with its charts and a flattening that belongs to it
+// The faces of `out` that the corners' UVs of `f` turn over, and the ratio
+// of their 2D area to their 3D area.
+template <class Mesh>
+std::pair<std::size_t, double> turned_faces_and_area_ratio(const Mesh& out, const QD::Chart_flattening_result<Mesh>& f)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(out);
+  double area2 = 0, area3 = 0;
+  std::size_t turned = 0;
+  for(auto fd : faces(out)) {
+    const std::size_t i = get(fim, fd);
+    const auto &a = f.corner_uv[3 * i], &b = f.corner_uv[3 * i + 1], &c = f.corner_uv[3 * i + 2];
+    const double signed_area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    turned += signed_area <= 0;
+    area2 += std::abs(signed_area);
+    area3 += CGAL::Polygon_mesh_processing::face_area(fd, out);
+  }
+  return {turned, area2 / area3};
+}
+
+// The charts `out_chart` of `out` flattened again with the cuts of `f` (its
+// seams with one chart on both sides).
+template <class Mesh>
+QD::Chart_flattening_result<Mesh> flatten_again(const Mesh& out, const Face_map<Mesh>& out_chart,
+                                                const QD::Chart_flattening_result<Mesh>& f)
+{
+  Edge_set<Mesh> cuts;
+  for(auto e : f.seam_edges) {
+    const auto h = halfedge(e, out);
+    if(out_chart.at(face(h, out)) == out_chart.at(face(opposite(h, out), out))) cuts.insert(e);
+  }
+  const auto constrained = boost::make_function_property_map<typename boost::graph_traits<Mesh>::edge_descriptor>(
+      [&](typename boost::graph_traits<Mesh>::edge_descriptor e) { return cuts.count(e) > 0; });
+  Face_map<Mesh> charts = out_chart;
+  return QD::flatten_charts(out, boost::make_assoc_property_map(charts),
+                            CGAL::parameters::edge_is_constrained_map(constrained));
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(segmentation_seams_are_smoothed_into_a_new_mesh, Mesh, Mesh_types)
 {
   Mesh tm;
@@ -1790,41 +1827,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(segmentation_seams_are_smoothed_into_a_new_mesh, M
   for(std::size_t c : charts) BOOST_TEST(c > 0u);
   // the UVs follow the faces of `out`: no corner swapped (no face turned over),
   // the 2D areas those of the 3D faces up to the charts' area distortion
-  const auto fim = CGAL::get_initialized_face_index_map(out);
   BOOST_REQUIRE(f.corner_uv.size() == 3 * num_faces(out));
-  double area2 = 0, area3 = 0;
-  std::size_t turned = 0;
-  for(auto fd : faces(out)) {
-    const std::size_t i = get(fim, fd);
-    const auto &a = f.corner_uv[3 * i], &b = f.corner_uv[3 * i + 1], &c = f.corner_uv[3 * i + 2];
-    const double signed_area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-    turned += signed_area <= 0;
-    area2 += std::abs(signed_area);
-    area3 += CGAL::Polygon_mesh_processing::face_area(fd, out);
-  }
-  BOOST_TEST(turned == 0u);
-  BOOST_TEST(std::abs(area2 / area3 - 1) <= f.max_area_distortion / 100 + 1e-9);
+  const std::pair<std::size_t, double> turned = turned_faces_and_area_ratio(out, f);
+  BOOST_TEST(turned.first == 0u);
+  BOOST_TEST(std::abs(turned.second - 1) <= f.max_area_distortion / 100 + 1e-9);
   // the seams are edges of `out`: between two charts, or cuts inside one; the
   // charts flattened again with those cuts are accepted, with the same seams
-  Edge_set<Mesh> cuts;
   std::size_t borders = 0, between = 0;
   for(auto e : f.seam_edges) {
     const auto h = halfedge(e, out);
     BOOST_REQUIRE(!is_border_edge(h, out));
-    if(out_chart.at(face(h, out)) == out_chart.at(face(opposite(h, out), out)))
-      cuts.insert(e);
-    else
-      ++borders;
+    if(out_chart.at(face(h, out)) != out_chart.at(face(opposite(h, out), out))) ++borders;
   }
   for(auto e : edges(out)) {
     const auto h = halfedge(e, out);
     between += !is_border_edge(h, out) && out_chart.at(face(h, out)) != out_chart.at(face(opposite(h, out), out));
   }
   BOOST_TEST(borders == between);
-  const auto constrained = boost::make_function_property_map<typename boost::graph_traits<Mesh>::edge_descriptor>(
-      [&](typename boost::graph_traits<Mesh>::edge_descriptor e) { return cuts.count(e) > 0; });
-  const QD::Chart_flattening_result<Mesh> again = QD::flatten_charts(
-      out, boost::make_assoc_property_map(out_chart), CGAL::parameters::edge_is_constrained_map(constrained));
+  const QD::Chart_flattening_result<Mesh> again = flatten_again(out, out_chart, f);
   BOOST_REQUIRE(again);
   BOOST_TEST(again.rejected_charts == 0u);
   BOOST_TEST(again.number_of_seam_curves == f.number_of_seam_curves);
@@ -1864,6 +1884,40 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(segmentation_seams_are_smoothed_into_a_new_mesh, M
                                             QD::parameters::area_preservation(2.))
                  .status == QD::Error_code::INVALID_ARGUMENT);
   BOOST_TEST((merged == chart));
+}
+
+// The try kept is not held as a copy while later tries are made: it is made
+// again from its smoothing levels at the end. On mannequin-devil the try kept
+// is not the last one; the mesh made again must be the one flattened, or the
+// corners' UVs would not follow its faces.
+BOOST_AUTO_TEST_CASE(seam_smoothing_makes_the_try_kept_again_after_later_tries)
+{
+  Surface_mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/mannequin-devil.off", tm));
+  Face_map<Surface_mesh> chart;
+  const QD::Segmentation_result<Surface_mesh> seg =
+      QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(seg);
+  Surface_mesh out;
+  Face_map<Surface_mesh> out_chart;
+  const QD::Seam_smoothing_result<Surface_mesh> s = QD::smooth_segmentation_seams(
+      tm, boost::make_assoc_property_map(chart), seg, out, boost::make_assoc_property_map(out_chart));
+  BOOST_REQUIRE(s);
+  BOOST_REQUIRE(s.kept);
+  BOOST_TEST(s.tries >= 2u);
+  const QD::Chart_flattening_result<Surface_mesh>& f = s.flattening;
+  BOOST_REQUIRE(f.corner_uv.size() == 3 * num_faces(out));
+  BOOST_TEST(num_faces(out) == num_faces(tm) + s.smoothing.faces_added);
+  BOOST_TEST(f.rejected_charts == 0u);
+  const std::pair<std::size_t, double> turned = turned_faces_and_area_ratio(out, f);
+  BOOST_TEST(turned.first == 0u);
+  BOOST_TEST(std::abs(turned.second - 1) <= f.max_area_distortion / 100 + 1e-9);
+  // flattened again, the charts of `out` give the seams the smoothing reported
+  const QD::Chart_flattening_result<Surface_mesh> again = flatten_again(out, out_chart, f);
+  BOOST_REQUIRE(again);
+  BOOST_TEST(again.number_of_seam_curves == f.number_of_seam_curves);
+  BOOST_TEST(again.seam_length == f.seam_length, tt::tolerance(1e-9));
+  BOOST_TEST(again.seam_zigzag == f.seam_zigzag, tt::tolerance(1e-9));
 }
 #endif
 

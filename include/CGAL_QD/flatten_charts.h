@@ -161,16 +161,21 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   for(auto& m : members)
     std::sort(m.begin(), m.end(), [&](face_descriptor x, face_descriptor y) { return get(fim, x) < get(fim, y); });
   result.charts.assign(n, Chart_report());
+  // the UVs of the corners chart by chart (3 per face of `members[k]`), and
+  // the position of every face in its chart's list: the corners of the whole
+  // mesh are gathered only at the end (each copy of them is 48 bytes a face)
   std::vector<std::vector<std::array<double, 2>>> uvs(n);
+  std::vector<std::uint32_t> local(nf, 0);
+  for(const std::vector<face_descriptor>& m : members)
+    for(std::size_t i = 0; i < m.size(); ++i) local[get(fim, m[i])] = static_cast<std::uint32_t>(i);
   for_each_index<ConcurrencyTag>(n, [&](std::size_t k) {
     if(!members[k].empty()) result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
   });
-  result.corner_uv.assign(3 * nf, {0., 0.});
-  auto store = [&](std::size_t k) {
-    for(std::size_t i = 0; i < members[k].size() && !uvs[k].empty(); ++i)
-      for(int j = 0; j < 3; ++j) result.corner_uv[3 * get(fim, members[k][i]) + j] = uvs[k][3 * i + j];
+  const std::array<double, 2> origin = {0., 0.};
+  auto corner_uv = [&](std::size_t i, int k) -> const std::array<double, 2>& {
+    const std::vector<std::array<double, 2>>& u = uvs[chart[i]];
+    return u.empty() ? origin : u[3 * std::size_t(local[i]) + std::size_t(k)];
   };
-  for(std::size_t k = 0; k < n; ++k) store(k);
   // the position of halfedge g in its face, and its 2D length in the face's chart
   auto position = [&](halfedge_descriptor g) {
     int k = 0;
@@ -181,7 +186,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     const std::size_t i = get(fim, face(g, tm));
     const int k = position(g);
     // corner k of a face holds the UV of the target of its k-th halfedge
-    const std::array<double, 2>&p = result.corner_uv[3 * i + k], &q = result.corner_uv[3 * i + (k + 2) % 3];
+    const std::array<double, 2>&p = corner_uv(i, k), &q = corner_uv(i, (k + 2) % 3);
     return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
   };
   const bool all_accepted =
@@ -228,29 +233,28 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
       return unmatched;
     };
     // the accepted charts with `todo` set, fitted to the lengths `factor`
-    // gives their border edges from the flattenings `start` (see
-    // `Chart_evaluator::evaluate()`)
+    // gives their border edges from the flattenings `first[k]` where it is
+    // not empty, else `uvs[k]` (see `Chart_evaluator::evaluate()`); `uvs`
+    // stays as it is until every chart is fitted
     std::vector<std::size_t> list;
     std::vector<Chart_report> fitted;
-    std::vector<std::vector<std::array<double, 2>>> fitted_uv;
-    auto fit = [&](const std::vector<std::vector<std::array<double, 2>>>& start, double pull_weight, bool exact) {
-      std::vector<std::vector<double>> target(n);
+    std::vector<std::vector<std::array<double, 2>>> fitted_uv, first(n);
+    auto fit = [&](double pull_weight, bool exact) {
       list.clear();
-      for(std::size_t k = 0; k < n; ++k) {
-        if(!todo[k] || kept[k] || !result.charts[k].accepted) continue;
-        list.push_back(k);
-        target[k].resize(3 * members[k].size());
-        for(std::size_t i = 0; i < members[k].size(); ++i) {
-          int j = 0;
-          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(members[k][i], tm), tm))
-            target[k][3 * i + j++] = factor[get(him, g)] * uv_length(g);
-        }
-      }
+      for(std::size_t k = 0; k < n; ++k)
+        if(todo[k] && !kept[k] && result.charts[k].accepted) list.push_back(k);
       fitted.assign(list.size(), Chart_report());
       fitted_uv.assign(list.size(), {});
       for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t i) {
         const std::size_t k = list[i];
-        fitted[i] = evaluator.evaluate(members[k], seam, &fitted_uv[i], &target[k], &start[k], pull_weight, exact);
+        std::vector<double> target(3 * members[k].size());
+        for(std::size_t f = 0; f < members[k].size(); ++f) {
+          int j = 0;
+          for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(members[k][f], tm), tm))
+            target[3 * f + j++] = factor[get(him, g)] * uv_length(g);
+        }
+        const std::vector<std::array<double, 2>>& start = first[k].empty() ? uvs[k] : first[k];
+        fitted[i] = evaluator.evaluate(members[k], seam, &fitted_uv[i], &target, &start, pull_weight, exact);
       });
     };
     // calls f with the chart across every seam edge of chart k
@@ -264,10 +268,11 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     // the charts of `todo` fitted exactly from their flattenings as they are
     // now (`kept` is all 0 before and after)
     auto fit_exactly = [&]() {
-      const std::vector<std::vector<std::array<double, 2>>> first_uvs = uvs;  // every fit starts from these
+      // every fit starts from the flattenings as they are now: a chart's is
+      // kept in `first` once a fit replaces it
       for(int round = 0; round < 3; ++round) {
         common_lengths();
-        fit(first_uvs, 1000., true);
+        fit(1000., true);
         std::fill(todo.begin(), todo.end(), 0);
         bool again = false;
         for(std::size_t i = 0; i < list.size(); ++i) {
@@ -275,6 +280,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
           if(fitted[i].accepted) {
             result.charts[k] = fitted[i];
             uvs[k].swap(fitted_uv[i]);
+            if(first[k].empty()) first[k].swap(fitted_uv[i]);
             continue;
           }
           // kept with its own lengths: its neighbours fit to them
@@ -283,10 +289,11 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
             if(other != k && !kept[other]) todo[other] = again = true;
           });
         }
-        for(std::size_t k : list) store(k);
+        fitted_uv.clear();
         if(!again) break;
       }
       std::fill(kept.begin(), kept.end(), 0);
+      for(std::vector<std::array<double, 2>>& f : first) std::vector<std::array<double, 2>>().swap(f);
     };
     std::fill(todo.begin(), todo.end(), 1);
     fit_exactly();
@@ -296,7 +303,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
       std::vector<char> pulled(n, 0);
       for(std::size_t round = 0; round < seam_pull_rounds; ++round) {
         todo = on_unmatched;
-        fit(uvs, seam_pull_weight, false);
+        fit(seam_pull_weight, false);
         bool moved = false;
         for(std::size_t i = 0; i < list.size(); ++i)
           if(fitted[i].accepted) {
@@ -305,7 +312,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
             pulled[list[i]] = 1;
             moved = true;
           }
-        for(std::size_t k : list) store(k);
+        fitted_uv.clear();
         if(!moved || !common_lengths()) break;
       }
       todo = pulled;
@@ -360,6 +367,13 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   for(std::size_t k = 0; k < compactness.number_of_charts; ++k)
     if(compactness.chart_id[k] < result.charts.size())
       result.charts[compactness.chart_id[k]].compactness = compactness.chart_compactness[k];
+  // the corners of the whole mesh, each chart's UVs freed once copied
+  result.corner_uv.assign(3 * nf, {0., 0.});
+  for(std::size_t k = 0; k < n; ++k) {
+    for(std::size_t i = 0; i < members[k].size() && !uvs[k].empty(); ++i)
+      for(int j = 0; j < 3; ++j) result.corner_uv[3 * get(fim, members[k][i]) + j] = uvs[k][3 * i + j];
+    std::vector<std::array<double, 2>>().swap(uvs[k]);
+  }
   result.time_flatten_ms = milliseconds_since(t);
   if(progress) progress("flatten", 1.);
 }

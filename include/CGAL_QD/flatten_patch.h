@@ -360,6 +360,7 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
     for(std::size_t r = 0; r < n; ++r) triplets.emplace_back(r, r, diagonal[r]);
     Eigen::SparseMatrix<double> A(n, n);
     A.setFromTriplets(triplets.begin(), triplets.end());
+    std::vector<Eigen::Triplet<double>>().swap(triplets);  // freed before the factorisation
     result.number_of_nonzeros = static_cast<std::size_t>(A.nonZeros());
     result.time_assembly_ms = internal::milliseconds_since(t);
 

@@ -195,19 +195,49 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
 
   // the charts that a try leaves as they were flatten as they did at the try before
   internal::Flattening_cache<Chart_report> cache;
-  std::unique_ptr<Try> best;  // the try kept: every chart accepted, the most seams matched
+  // the try kept (every chart accepted, the most seams matched): its
+  // flattening, and its levels; its mesh while no later try is made (a later
+  // try frees it, and it is made again from its levels at the end: two
+  // copies of a mesh of a million faces are a few hundred megabytes)
+  std::unique_ptr<Try> best;
+  bool have_best = false;
+  std::map<Chart_pair, std::size_t> best_level;
   Chart_flattening_result<TriangleMesh> best_flattening;
   double zigzag_before = 1;
+  std::size_t most_faces_added = 0;
 
-  for(int round = 0; round < max_tries; ++round) {
-    auto trial = std::make_unique<Try>();
-    trial->copy(tm, face_chart, is_input_cut);
-    TriangleMesh& mesh = trial->mesh;
-    auto& chart = trial->chart;
-    auto& cut = trial->cut;
+  // the zigzag of every seam of a try: borders between charts and cuts
+  auto zigzag = [&](const Try& t) {
+    std::vector<edge_descriptor> all;
+    for(edge_descriptor e : edges(t.mesh)) {
+      const halfedge_descriptor h = halfedge(e, t.mesh);
+      if(!is_border_edge(h, t.mesh) &&
+         (get(t.cut, e) || get(t.chart, face(h, t.mesh)) != get(t.chart, face(opposite(h, t.mesh), t.mesh))))
+        all.push_back(e);
+    }
+    return seam_zigzag(t.mesh, all).zigzag;
+  };
+  // a copy of the input with its seams smoothed at the levels `lv` (which
+  // get level 0 for a pair of charts that only the smoothing brings
+  // together), and what the smoothing did; `zigzag_of_copy`, if given,
+  // receives the zigzag of the copy before the smoothing
+  struct Smoothed
+  {
+    std::unique_ptr<Try> t;
+    Boundary_smoothing_result sr;
+    bool called = false;
+  };
+  auto smooth_at = [&](std::map<Chart_pair, std::size_t>& lv, std::size_t room, double* zigzag_of_copy) {
+    Smoothed out;
+    out.t = std::make_unique<Try>();
+    out.t->copy(tm, face_chart, is_input_cut);
+    TriangleMesh& mesh = out.t->mesh;
+    auto& chart = out.t->chart;
+    auto& cut = out.t->cut;
     auto cut_now = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
     auto keep = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
     auto stays = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
+    internal::reserve_for_faces(mesh, room);
     auto chart_of = [&](halfedge_descriptor h) -> std::size_t { return get(chart, face(h, mesh)); };
     for(edge_descriptor e : edges(mesh)) {
       const halfedge_descriptor h = halfedge(e, mesh);
@@ -216,21 +246,10 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       put(stays, e, false);
       if(is_border_edge(h, mesh)) continue;
       const std::size_t a = chart_of(h), b = chart_of(opposite(h, mesh));
-      if(a != b && level[pair_of(a, b)] == along_edges) put(stays, e, true);
+      if(a != b && lv[pair_of(a, b)] == along_edges) put(stays, e, true);
     }
-    // the zigzag of every seam: borders between charts and cuts
-    auto zigzag = [&]() {
-      std::vector<edge_descriptor> all;
-      for(edge_descriptor e : edges(mesh)) {
-        const halfedge_descriptor h = halfedge(e, mesh);
-        if(!is_border_edge(h, mesh) && (get(cut, e) || chart_of(h) != chart_of(opposite(h, mesh)))) all.push_back(e);
-      }
-      return seam_zigzag(mesh, all).zigzag;
-    };
-    if(round == 0) zigzag_before = zigzag();
-    // what the calls of this try did
-    Boundary_smoothing_result sr;
-    bool called = false;
+    if(zigzag_of_copy) *zigzag_of_copy = zigzag(*out.t);
+    Boundary_smoothing_result& sr = out.sr;
     auto add = [&](const Boundary_smoothing_result& s) {
       sr.status = s.status;
       sr.number_of_curves += s.number_of_curves;
@@ -241,17 +260,17 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       sr.max_border_move = (std::max)(sr.max_border_move, s.max_border_move);
       sr.max_relative_border_move = (std::max)(sr.max_relative_border_move, s.max_relative_border_move);
       sr.time_ms += s.time_ms;
-      called = true;
+      out.called = true;
     };
     for(std::size_t l = 0; l < strengths.size() && sr; ++l) {
-      if(std::none_of(level.begin(), level.end(), [&](const auto& p) { return p.second == l; })) continue;
+      if(std::none_of(lv.begin(), lv.end(), [&](const auto& p) { return p.second == l; })) continue;
       // the borders at level l, every other one and the cuts staying
       bool borders = false;
       for(edge_descriptor e : edges(mesh)) {
         const halfedge_descriptor h = halfedge(e, mesh);
         if(is_border_edge(h, mesh)) continue;
         const std::size_t a = chart_of(h), b = chart_of(opposite(h, mesh));
-        const bool smooth = a != b && !get(stays, e) && level[pair_of(a, b)] == l;
+        const bool smooth = a != b && !get(stays, e) && lv[pair_of(a, b)] == l;
         put(keep, e, get(cut, e) || (a != b && !smooth));
         borders = borders || smooth;
       }
@@ -269,7 +288,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       bool cuts = false;
       for(edge_descriptor e : edges(mesh)) {
         const std::size_t c = get(cut, e) ? chart_of(halfedge(e, mesh)) : 0;  // a cut is never on the mesh border
-        const bool now = get(cut, e) && level[pair_of(c, c)] == l;
+        const bool now = get(cut, e) && lv[pair_of(c, c)] == l;
         put(cut_now, e, now);
         if(now) put(cut, e, false);
         cuts = cuts || now;
@@ -281,6 +300,22 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
           if(get(cut_now, e)) put(cut, e, true);
       }
     }
+    return out;
+  };
+
+  for(int round = 0; round < max_tries; ++round) {
+    best.reset();  // the try kept is made again at the end if it is not this one
+    const std::map<Chart_pair, std::size_t> level_of_try = level;
+    // room for the faces this try adds: a tenth of the mesh at the first try,
+    // then a little more than the most a try added
+    Smoothed smoothed = smooth_at(level, round == 0 ? num_faces(tm) / 10 : most_faces_added + most_faces_added / 4,
+                                  round == 0 ? &zigzag_before : nullptr);
+    std::unique_ptr<Try> trial = std::move(smoothed.t);
+    TriangleMesh& mesh = trial->mesh;
+    auto& chart = trial->chart;
+    auto& cut = trial->cut;
+    Boundary_smoothing_result& sr = smoothed.sr;
+    const bool called = smoothed.called;
     if(round == 0) {
       result.number_of_curves = sr.number_of_curves;
       result.smoothing = sr;
@@ -292,7 +327,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     }
     if(!called || sr.curves_smoothed == 0) break;  // nothing smoothed in this try
     sr.zigzag_before = zigzag_before;
-    sr.zigzag_after = zigzag();
+    sr.zigzag_after = zigzag(*trial);
+    most_faces_added = (std::max)(most_faces_added, sr.faces_added);
     // the cuts inside charts, and the halves of a cut edge that the smoothing
     // split: with the borders, they are the seams
     const auto fnp = parameters::max_local_area_distortion(
@@ -312,7 +348,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
         internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache, true);
     ++result.tries;
     if(!f || f.number_of_charts != segmentation.number_of_charts) break;
-    if(!best) result.rejected_charts = f.rejected_charts;
+    if(!have_best) result.rejected_charts = f.rejected_charts;
     // the borders and cuts of a rejected chart are smoothed less; where every
     // chart is accepted (the seams were fitted only then), so is a seam whose
     // sides no longer match, or differ by more than the worst seam did before
@@ -338,18 +374,22 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     // kept if every chart is accepted, and more seams match than in the try
     // kept before (as many: if the seams zigzag less)
     if(f.rejected_charts == 0 &&
-       (!best || f.seam_curves_matched > best_flattening.seam_curves_matched ||
+       (!have_best || f.seam_curves_matched > best_flattening.seam_curves_matched ||
         (f.seam_curves_matched == best_flattening.seam_curves_matched &&
          f.seam_zigzag < best_flattening.seam_zigzag))) {
       result.smoothing = sr;
       best = std::move(trial);
+      have_best = true;
+      best_level = level_of_try;
       best_flattening = std::move(f);
     }
     if(!changed) break;
   }
-  if(result.status == Error_code::OK && best) {
+  if(result.status == Error_code::OK && have_best) {
     result.kept = true;
-    result.flattening = best->copy_into(out, out_chart, best_flattening);
+    cache.clear();
+    if(!best) best = smooth_at(best_level, most_faces_added + most_faces_added / 4, nullptr).t;
+    result.flattening = best->copy_into(out, out_chart, std::move(best_flattening));
   }
   result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -79,6 +79,13 @@ public:
     ++m_generation;
   }
 
+  // every entry dropped
+  void clear()
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_entries.clear();
+  }
+
   bool find(const Key& key, Report& report, std::vector<std::array<double, 2>>* uv)
   {
     std::lock_guard<std::mutex> lock(m_mutex);

@@ -51,16 +51,48 @@ public:
   // `geo`: unit normal and area of every face; `next_to`: the faces across
   // the edges of every face, in the order of `faces_around_face()` (`none`
   // across a border); `order`: the faces in the order of `faces(tm)`
-  Normal_vsa(const std::vector<Face_geometry>& geo, std::vector<std::array<std::size_t, 3>> next_to,
-             std::vector<std::size_t> order)
-      : m_geo(geo), m_next_to(std::move(next_to)), m_order(std::move(order)), m_proxy_of(geo.size(), none)
+  Normal_vsa(const std::vector<Face_geometry>& geo, const std::vector<std::array<std::size_t, 3>>& next_to,
+             const std::vector<std::size_t>& order)
+      : m_proxy_of(geo.size(), no_face)
   {
+    // the faces numbered in breadth-first order from the first face of
+    // `order` (and from the next face not reached yet, per component), and
+    // what the flooding reads of a face packed: on a mesh of a million faces
+    // the flooding missed the cache at nearly every face it reached. Every
+    // loop keeps the order it had (of `order`, of the neighbours), so the
+    // decisions are the same.
+    const std::size_t nf = geo.size();
+    std::vector<std::uint32_t> id(nf, no_face);
+    m_face.reserve(nf);
+    for(std::size_t s : order) {
+      if(id[s] != no_face) continue;
+      std::size_t q = m_face.size();
+      id[s] = static_cast<std::uint32_t>(m_face.size());
+      m_face.push_back(s);
+      for(; q < m_face.size(); ++q)
+        for(std::size_t g : next_to[m_face[q]])
+          if(g != none && id[g] == no_face) {
+            id[g] = static_cast<std::uint32_t>(m_face.size());
+            m_face.push_back(g);
+          }
+    }
+    m_geo.reserve(nf);
+    m_next_to.reserve(nf);
+    for(std::size_t f : m_face) {
+      const Face_geometry& g = geo[f];
+      m_geo.push_back(Normal_and_area{{g.normal[0], g.normal[1], g.normal[2], g.area}});
+      std::array<std::uint32_t, 3> m;
+      for(int k = 0; k < 3; ++k) m[k] = next_to[f][k] == none ? no_face : id[next_to[f][k]];
+      m_next_to.push_back(m);
+    }
+    m_order.reserve(order.size());
+    for(std::size_t f : order) m_order.push_back(id[f]);
   }
 
   // one proxy per connected component, fitted to all its faces
   void bootstrap()
   {
-    std::fill(m_proxy_of.begin(), m_proxy_of.end(), none);
+    std::fill(m_proxy_of.begin(), m_proxy_of.end(), no_face);
     m_proxies.clear();
     if(m_order.empty()) return;
     std::vector<std::vector<std::size_t>> components;
@@ -69,21 +101,21 @@ public:
       std::vector<std::size_t> patch(1, seed);
       std::stack<std::size_t> stack;
       stack.push(seed);
-      m_proxy_of[seed] = component;
+      m_proxy_of[seed] = static_cast<std::uint32_t>(component);
       while(!stack.empty()) {
         const std::size_t f = stack.top();
         stack.pop();
-        for(std::size_t g : m_next_to[f])
-          if(g != none && m_proxy_of[g] == none) {
+        for(std::uint32_t g : m_next_to[f])
+          if(g != no_face && m_proxy_of[g] == no_face) {
             patch.push_back(g);
             stack.push(g);
-            m_proxy_of[g] = component;
+            m_proxy_of[g] = static_cast<std::uint32_t>(component);
           }
       }
       components.push_back(std::move(patch));
       // the first face not reached yet, in face order (the faces before the
       // last seed all were)
-      while(next < m_order.size() && m_proxy_of[m_order[next]] != none) ++next;
+      while(next < m_order.size() && m_proxy_of[m_order[next]] != no_face) ++next;
       if(next == m_order.size()) break;
       ++component;
       seed = m_order[next];
@@ -162,9 +194,20 @@ public:
   std::size_t number_of_proxies() const { return m_proxies.size(); }
 
   // the proxy of every face
-  const std::vector<std::size_t>& proxy_of() const { return m_proxy_of; }
+  std::vector<std::size_t> proxy_of() const
+  {
+    std::vector<std::size_t> p(m_proxy_of.size());
+    for(std::size_t i = 0; i < p.size(); ++i) p[m_face[i]] = m_proxy_of[i] == no_face ? none : m_proxy_of[i];
+    return p;
+  }
 
 private:
+  static constexpr std::uint32_t no_face = UINT32_MAX;  // no neighbour; no proxy yet
+  // unit normal and area
+  struct Normal_and_area
+  {
+    std::array<double, 4> v;
+  };
   struct Proxy
   {
     std::array<double, 3> normal;
@@ -187,9 +230,9 @@ private:
 
   double error(std::size_t f, const std::array<double, 3>& n) const
   {
-    const Face_geometry& d = m_geo[f];
-    const double x = d.normal[0] - n[0], y = d.normal[1] - n[1], z = d.normal[2] - n[2];
-    return d.area * (x * x + y * y + z * z);
+    const std::array<double, 4>& d = m_geo[f].v;
+    const double x = d[0] - n[0], y = d[1] - n[1], z = d[2] - n[2];
+    return d[3] * (x * x + y * y + z * z);
   }
 
   // the area-weighted mean normal of the faces, the face nearest to it, the error
@@ -198,8 +241,8 @@ private:
   {
     double s[3] = {0., 0., 0.};
     for(Iterator it = begin; it != end; ++it) {
-      const Face_geometry& d = m_geo[*it];
-      for(int i = 0; i < 3; ++i) s[i] += d.area * d.normal[i];
+      const std::array<double, 4>& d = m_geo[*it].v;
+      for(int i = 0; i < 3; ++i) s[i] += d[3] * d[i];
     }
     const double l = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
     Proxy p;
@@ -222,7 +265,7 @@ private:
   // in the order of the error of the face to the proxy it would join
   void partition()
   {
-    std::fill(m_proxy_of.begin(), m_proxy_of.end(), none);
+    std::fill(m_proxy_of.begin(), m_proxy_of.end(), no_face);
     // a binary heap, as std::priority_queue keeps it, whose storage is kept
     m_queue.clear();
     auto push = [&](std::size_t g, std::size_t p) {
@@ -231,18 +274,18 @@ private:
     };
     for(std::size_t p = 0; p < m_proxies.size(); ++p) {
       const std::size_t f = m_proxies[p].seed;
-      m_proxy_of[f] = p;
-      for(std::size_t g : m_next_to[f])
-        if(g != none && m_proxy_of[g] == none) push(g, p);
+      m_proxy_of[f] = static_cast<std::uint32_t>(p);
+      for(std::uint32_t g : m_next_to[f])
+        if(g != no_face && m_proxy_of[g] == no_face) push(g, p);
     }
     while(!m_queue.empty()) {
       const Face_to_integrate c = m_queue.front();
       std::pop_heap(m_queue.begin(), m_queue.end());
       m_queue.pop_back();
-      if(m_proxy_of[c.face] != none) continue;
+      if(m_proxy_of[c.face] != no_face) continue;
       m_proxy_of[c.face] = c.proxy;
-      for(std::size_t g : m_next_to[c.face])
-        if(g != none && m_proxy_of[g] == none) push(g, c.proxy);
+      for(std::uint32_t g : m_next_to[c.face])
+        if(g != no_face && m_proxy_of[g] == no_face) push(g, c.proxy);
     }
   }
 
@@ -294,14 +337,15 @@ private:
     Proxy p = fit(one, one + 1);
     const std::size_t before = m_proxy_of[f];
     m_proxies[before].error -= error(f, m_proxies[before].normal);
-    m_proxy_of[f] = m_proxies.size();
+    m_proxy_of[f] = static_cast<std::uint32_t>(m_proxies.size());
     m_proxies.push_back(p);
   }
 
-  const std::vector<Face_geometry>& m_geo;
-  std::vector<std::array<std::size_t, 3>> m_next_to;
-  std::vector<std::size_t> m_order;
-  std::vector<std::size_t> m_proxy_of;
+  std::vector<Normal_and_area> m_geo;
+  std::vector<std::array<std::uint32_t, 3>> m_next_to;
+  std::vector<std::size_t> m_face;         // the face index of every face, by number
+  std::vector<std::uint32_t> m_order;      // the faces in the order of `faces(tm)`, by number
+  std::vector<std::uint32_t> m_proxy_of;  // by number; `no_face` for none
   std::vector<Proxy> m_proxies;
   std::vector<Face_to_integrate> m_queue;
   std::vector<std::size_t> m_start, m_fill, m_faces;  // the faces of every proxy, by proxy

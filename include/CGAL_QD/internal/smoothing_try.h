@@ -11,21 +11,38 @@
 #include <CGAL_QD/flatten_charts.h>
 
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <array>
 #include <cstddef>
-#include <iterator>
-#include <map>
 #include <utility>
 #include <vector>
 
 namespace CGAL_QD {
 namespace internal {
+
+// room for `faces` more faces (and the vertices and edges that splitting
+// faces and edges to add them brings) in the property arrays of a
+// `CGAL::Surface_mesh`, so that they do not double when the smoothing adds
+// its first face; other meshes grow as they do
+template <class TriangleMesh>
+void reserve_for_faces(TriangleMesh&, std::size_t)
+{}
+
+template <class P>
+void reserve_for_faces(CGAL::Surface_mesh<P>& sm, std::size_t faces)
+{
+  typedef typename CGAL::Surface_mesh<P>::size_type S;
+  sm.reserve(static_cast<S>(sm.number_of_vertices() + faces / 2 + 16),
+             static_cast<S>(sm.number_of_edges() + 3 * faces / 2 + 16),
+             static_cast<S>(sm.number_of_faces() + faces + 16));
+}
 
 template <class TriangleMesh>
 class Smoothing_try
@@ -54,51 +71,63 @@ public:
   template <class SourceChartMap, class IsCut>
   void copy(const TriangleMesh& source, const SourceChartMap& source_chart, const IsCut& is_cut)
   {
-    std::vector<std::pair<face_descriptor, face_descriptor>> f2f;
-    std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> h2h;
+    // the image of every face and halfedge, by index (a few bytes each: on a
+    // mesh of a million faces, lists of pairs took a hundred megabytes)
+    const auto fim = CGAL::get_initialized_face_index_map(source);
+    const auto him = CGAL::get_initialized_halfedge_index_map(source);
+    std::vector<face_descriptor> face_image(num_faces(source));
+    std::vector<halfedge_descriptor> halfedge_image(num_halfedges(source));
     CGAL::copy_face_graph(source, mesh,
-                          CGAL::parameters::face_to_face_output_iterator(std::back_inserter(f2f))
-                              .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)));
-    for(const auto& p : f2f) put(chart, p.second, static_cast<std::size_t>(get(source_chart, p.first)));
-    for(const auto& p : h2h) put(cut, edge(p.second, mesh), bool(is_cut(edge(p.first, source))));
+                          CGAL::parameters::face_to_face_map(boost::make_iterator_property_map(face_image.begin(), fim))
+                              .halfedge_to_halfedge_map(
+                                  boost::make_iterator_property_map(halfedge_image.begin(), him)));
+    for(face_descriptor f : faces(source))
+      put(chart, face_image[get(fim, f)], static_cast<std::size_t>(get(source_chart, f)));
+    for(edge_descriptor e : edges(source))
+      put(cut, edge(halfedge_image[get(him, halfedge(e, source))], mesh), bool(is_cut(e)));
   }
 
-  // copies this mesh into `out` (empty), its charts into `out_chart`, and
-  // returns `f`, the flattening of this mesh, for `out`: the UVs of the
-  // corners and the seam edges carried over, the points by `out`'s vertex index
+  // moves this mesh into `out` (empty) by a copy, its charts into
+  // `out_chart`, and returns `f`, the flattening of this mesh, for `out`: the
+  // UVs of the corners and the seam edges carried over, the points by `out`'s
+  // vertex index
   template <class OutputChartMap>
   Chart_flattening_result<TriangleMesh> copy_into(TriangleMesh& out, OutputChartMap out_chart,
-                                                  const Chart_flattening_result<TriangleMesh>& f) const
+                                                  Chart_flattening_result<TriangleMesh>&& f) const
   {
-    std::vector<std::pair<face_descriptor, face_descriptor>> f2f;
-    std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> h2h;
-    CGAL::copy_face_graph(mesh, out,
-                          CGAL::parameters::face_to_face_output_iterator(std::back_inserter(f2f))
-                              .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)));
-    const std::map<halfedge_descriptor, halfedge_descriptor> image(h2h.begin(), h2h.end());
-    typedef typename boost::property_traits<OutputChartMap>::value_type Id;
-    for(const auto& p : f2f) put(out_chart, p.second, static_cast<Id>(get(chart, p.first)));
-
-    Chart_flattening_result<TriangleMesh> r = f;
     const auto fim = CGAL::get_initialized_face_index_map(mesh);
+    const auto him = CGAL::get_initialized_halfedge_index_map(mesh);
+    std::vector<face_descriptor> face_image(num_faces(mesh));
+    std::vector<halfedge_descriptor> halfedge_image(num_halfedges(mesh));
+    CGAL::copy_face_graph(mesh, out,
+                          CGAL::parameters::face_to_face_map(boost::make_iterator_property_map(face_image.begin(), fim))
+                              .halfedge_to_halfedge_map(
+                                  boost::make_iterator_property_map(halfedge_image.begin(), him)));
+    typedef boost::property_traits<OutputChartMap> Id_traits;
+    typedef typename Id_traits::value_type Id;
+    for(face_descriptor f0 : faces(mesh)) put(out_chart, face_image[get(fim, f0)], static_cast<Id>(get(chart, f0)));
+
+    Chart_flattening_result<TriangleMesh> r = std::move(f);
     const auto out_fim = CGAL::get_initialized_face_index_map(out);
-    r.corner_uv.assign(f.corner_uv.size(), {{0, 0}});
-    for(const auto& p : f2f) {
+    std::vector<std::array<double, 2>> corner_uv(r.corner_uv.size(), {{0, 0}});
+    for(face_descriptor f0 : faces(mesh)) {
+      const face_descriptor f1 = face_image[get(fim, f0)];
       // corner k is the target of the k-th halfedge from halfedge(face)
       std::array<halfedge_descriptor, 3> corners;
       std::size_t k = 0;
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(p.second, out), out))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f1, out), out))
         if(k < 3) corners[k++] = h;
       k = 0;
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(p.first, mesh), mesh)) {
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f0, mesh), mesh)) {
         if(k == 3) break;
-        const halfedge_descriptor g = image.at(h);
+        const halfedge_descriptor g = halfedge_image[get(him, h)];
         const std::size_t j = g == corners[0] ? 0 : g == corners[1] ? 1 : 2;
-        r.corner_uv[3 * get(out_fim, p.second) + j] = f.corner_uv[3 * get(fim, p.first) + k];
+        corner_uv[3 * get(out_fim, f1) + j] = r.corner_uv[3 * get(fim, f0) + k];
         ++k;
       }
     }
-    for(edge_descriptor& e : r.seam_edges) e = edge(image.at(halfedge(e, mesh)), out);
+    r.corner_uv.swap(corner_uv);
+    for(edge_descriptor& e : r.seam_edges) e = edge(halfedge_image[get(him, halfedge(e, mesh))], out);
     r.points = points_by_index(out, get(CGAL::vertex_point, out), CGAL::get_initialized_vertex_index_map(out));
     r.number_of_faces = static_cast<std::size_t>(num_faces(out));
     return r;
