@@ -220,14 +220,16 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   // a copy of the input with its seams smoothed at the levels `lv` (which
   // get level 0 for a pair of charts that only the smoothing brings
   // together), and what the smoothing did; `zigzag_of_copy`, if given,
-  // receives the zigzag of the copy before the smoothing
+  // receives the zigzag of the copy before the smoothing. The copy has room
+  // for the faces the smoothing adds: a tenth of the mesh until a try added
+  // some, then a little more than the most a try added.
   struct Smoothed
   {
     std::unique_ptr<Try> t;
     Boundary_smoothing_result sr;
     bool called = false;
   };
-  auto smooth_at = [&](std::map<Chart_pair, std::size_t>& lv, std::size_t room, double* zigzag_of_copy) {
+  auto smooth_at = [&](std::map<Chart_pair, std::size_t>& lv, double* zigzag_of_copy) {
     Smoothed out;
     out.t = std::make_unique<Try>();
     out.t->copy(tm, face_chart, is_input_cut);
@@ -237,7 +239,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     auto cut_now = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
     auto keep = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
     auto stays = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
-    internal::reserve_for_faces(mesh, room);
+    internal::reserve_for_faces(mesh, most_faces_added == 0 ? num_faces(tm) / 10
+                                                            : most_faces_added + most_faces_added / 4);
     auto chart_of = [&](halfedge_descriptor h) -> std::size_t { return get(chart, face(h, mesh)); };
     for(edge_descriptor e : edges(mesh)) {
       const halfedge_descriptor h = halfedge(e, mesh);
@@ -306,10 +309,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   for(int round = 0; round < max_tries; ++round) {
     best.reset();  // the try kept is made again at the end if it is not this one
     const std::map<Chart_pair, std::size_t> level_of_try = level;
-    // room for the faces this try adds: a tenth of the mesh at the first try,
-    // then a little more than the most a try added
-    Smoothed smoothed = smooth_at(level, round == 0 ? num_faces(tm) / 10 : most_faces_added + most_faces_added / 4,
-                                  round == 0 ? &zigzag_before : nullptr);
+    Smoothed smoothed = smooth_at(level, round == 0 ? &zigzag_before : nullptr);
     std::unique_ptr<Try> trial = std::move(smoothed.t);
     TriangleMesh& mesh = trial->mesh;
     auto& chart = trial->chart;
@@ -388,7 +388,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   if(result.status == Error_code::OK && have_best) {
     result.kept = true;
     cache.clear();
-    if(!best) best = smooth_at(best_level, most_faces_added + most_faces_added / 4, nullptr).t;
+    if(!best) best = smooth_at(best_level, nullptr).t;
     result.flattening = best->copy_into(out, out_chart, std::move(best_flattening));
   }
   result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -80,7 +80,7 @@ public:
     m_next_to.reserve(nf);
     for(std::size_t f : m_face) {
       const Face_geometry& g = geo[f];
-      m_geo.push_back(Normal_and_area{{g.normal[0], g.normal[1], g.normal[2], g.area}});
+      m_geo.push_back({g.normal[0], g.normal[1], g.normal[2], g.area});
       std::array<std::uint32_t, 3> m;
       for(int k = 0; k < 3; ++k) m[k] = next_to[f][k] == none ? no_face : id[next_to[f][k]];
       m_next_to.push_back(m);
@@ -203,11 +203,6 @@ public:
 
 private:
   static constexpr std::uint32_t no_face = UINT32_MAX;  // no neighbour; no proxy yet
-  // unit normal and area
-  struct Normal_and_area
-  {
-    std::array<double, 4> v;
-  };
   struct Proxy
   {
     std::array<double, 3> normal;
@@ -230,7 +225,7 @@ private:
 
   double error(std::size_t f, const std::array<double, 3>& n) const
   {
-    const std::array<double, 4>& d = m_geo[f].v;
+    const std::array<double, 4>& d = m_geo[f];
     const double x = d[0] - n[0], y = d[1] - n[1], z = d[2] - n[2];
     return d[3] * (x * x + y * y + z * z);
   }
@@ -241,7 +236,7 @@ private:
   {
     double s[3] = {0., 0., 0.};
     for(Iterator it = begin; it != end; ++it) {
-      const std::array<double, 4>& d = m_geo[*it].v;
+      const std::array<double, 4>& d = m_geo[*it];
       for(int i = 0; i < 3; ++i) s[i] += d[3] * d[i];
     }
     const double l = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
@@ -341,7 +336,7 @@ private:
     m_proxies.push_back(p);
   }
 
-  std::vector<Normal_and_area> m_geo;
+  std::vector<std::array<double, 4>> m_geo;  // unit normal and area, by number
   std::vector<std::array<std::uint32_t, 3>> m_next_to;
   std::vector<std::size_t> m_face;         // the face index of every face, by number
   std::vector<std::uint32_t> m_order;      // the faces in the order of `faces(tm)`, by number

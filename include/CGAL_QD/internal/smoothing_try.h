@@ -71,47 +71,29 @@ public:
   template <class SourceChartMap, class IsCut>
   void copy(const TriangleMesh& source, const SourceChartMap& source_chart, const IsCut& is_cut)
   {
-    // the image of every face and halfedge, by index (a few bytes each: on a
-    // mesh of a million faces, lists of pairs took a hundred megabytes)
-    const auto fim = CGAL::get_initialized_face_index_map(source);
-    const auto him = CGAL::get_initialized_halfedge_index_map(source);
-    std::vector<face_descriptor> face_image(num_faces(source));
-    std::vector<halfedge_descriptor> halfedge_image(num_halfedges(source));
-    CGAL::copy_face_graph(source, mesh,
-                          CGAL::parameters::face_to_face_map(boost::make_iterator_property_map(face_image.begin(), fim))
-                              .halfedge_to_halfedge_map(
-                                  boost::make_iterator_property_map(halfedge_image.begin(), him)));
+    const Images images = copy_mesh(source, mesh);
     for(face_descriptor f : faces(source))
-      put(chart, face_image[get(fim, f)], static_cast<std::size_t>(get(source_chart, f)));
-    for(edge_descriptor e : edges(source))
-      put(cut, edge(halfedge_image[get(him, halfedge(e, source))], mesh), bool(is_cut(e)));
+      put(chart, images.face_of(f), static_cast<std::size_t>(get(source_chart, f)));
+    for(edge_descriptor e : edges(source)) put(cut, edge(images.halfedge_of(halfedge(e, source)), mesh), bool(is_cut(e)));
   }
 
-  // moves this mesh into `out` (empty) by a copy, its charts into
-  // `out_chart`, and returns `f`, the flattening of this mesh, for `out`: the
-  // UVs of the corners and the seam edges carried over, the points by `out`'s
-  // vertex index
+  // copies this mesh into `out` (empty), its charts into `out_chart`, and
+  // returns `f`, the flattening of this mesh, for `out`: the UVs of the
+  // corners and the seam edges carried over, the points by `out`'s vertex index
   template <class OutputChartMap>
   Chart_flattening_result<TriangleMesh> copy_into(TriangleMesh& out, OutputChartMap out_chart,
                                                   Chart_flattening_result<TriangleMesh>&& f) const
   {
-    const auto fim = CGAL::get_initialized_face_index_map(mesh);
-    const auto him = CGAL::get_initialized_halfedge_index_map(mesh);
-    std::vector<face_descriptor> face_image(num_faces(mesh));
-    std::vector<halfedge_descriptor> halfedge_image(num_halfedges(mesh));
-    CGAL::copy_face_graph(mesh, out,
-                          CGAL::parameters::face_to_face_map(boost::make_iterator_property_map(face_image.begin(), fim))
-                              .halfedge_to_halfedge_map(
-                                  boost::make_iterator_property_map(halfedge_image.begin(), him)));
-    typedef boost::property_traits<OutputChartMap> Id_traits;
-    typedef typename Id_traits::value_type Id;
-    for(face_descriptor f0 : faces(mesh)) put(out_chart, face_image[get(fim, f0)], static_cast<Id>(get(chart, f0)));
+    const Images images = copy_mesh(mesh, out);
+    typedef typename boost::property_traits<OutputChartMap>::value_type Id;
+    for(face_descriptor f0 : faces(mesh)) put(out_chart, images.face_of(f0), static_cast<Id>(get(chart, f0)));
 
     Chart_flattening_result<TriangleMesh> r = std::move(f);
+    const auto fim = CGAL::get_initialized_face_index_map(mesh);
     const auto out_fim = CGAL::get_initialized_face_index_map(out);
     std::vector<std::array<double, 2>> corner_uv(r.corner_uv.size(), {{0, 0}});
     for(face_descriptor f0 : faces(mesh)) {
-      const face_descriptor f1 = face_image[get(fim, f0)];
+      const face_descriptor f1 = images.face_of(f0);
       // corner k is the target of the k-th halfedge from halfedge(face)
       std::array<halfedge_descriptor, 3> corners;
       std::size_t k = 0;
@@ -120,17 +102,42 @@ public:
       k = 0;
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f0, mesh), mesh)) {
         if(k == 3) break;
-        const halfedge_descriptor g = halfedge_image[get(him, h)];
+        const halfedge_descriptor g = images.halfedge_of(h);
         const std::size_t j = g == corners[0] ? 0 : g == corners[1] ? 1 : 2;
         corner_uv[3 * get(out_fim, f1) + j] = r.corner_uv[3 * get(fim, f0) + k];
         ++k;
       }
     }
     r.corner_uv.swap(corner_uv);
-    for(edge_descriptor& e : r.seam_edges) e = edge(halfedge_image[get(him, halfedge(e, mesh))], out);
+    for(edge_descriptor& e : r.seam_edges) e = edge(images.halfedge_of(halfedge(e, mesh)), out);
     r.points = points_by_index(out, get(CGAL::vertex_point, out), CGAL::get_initialized_vertex_index_map(out));
     r.number_of_faces = static_cast<std::size_t>(num_faces(out));
     return r;
+  }
+
+private:
+  // the image in a copy of every face and halfedge of its source, by index (a
+  // few bytes each: on a mesh of a million faces, lists of pairs and a map of
+  // the halfedges took a few hundred megabytes)
+  struct Images
+  {
+    decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>())) fim;
+    decltype(CGAL::get_initialized_halfedge_index_map(std::declval<const TriangleMesh&>())) him;
+    std::vector<face_descriptor> faces;
+    std::vector<halfedge_descriptor> halfedges;
+    face_descriptor face_of(face_descriptor f) const { return faces[get(fim, f)]; }
+    halfedge_descriptor halfedge_of(halfedge_descriptor h) const { return halfedges[get(him, h)]; }
+  };
+
+  // `target` (empty) becomes a copy of `source`
+  static Images copy_mesh(const TriangleMesh& source, TriangleMesh& target)
+  {
+    Images i{CGAL::get_initialized_face_index_map(source), CGAL::get_initialized_halfedge_index_map(source),
+             std::vector<face_descriptor>(num_faces(source)), std::vector<halfedge_descriptor>(num_halfedges(source))};
+    CGAL::copy_face_graph(source, target,
+                          CGAL::parameters::face_to_face_map(boost::make_iterator_property_map(i.faces.begin(), i.fim))
+                              .halfedge_to_halfedge_map(boost::make_iterator_property_map(i.halfedges.begin(), i.him)));
+    return i;
   }
 };
 
