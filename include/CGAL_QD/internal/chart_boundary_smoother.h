@@ -7,6 +7,7 @@
 // The smoothing of one border curve between two charts by a cut through the
 // triangles of a band around it; used by `smooth_chart_boundaries()`.
 
+#include <CGAL_QD/internal/band_cut.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/labelled_triangles.h>
 #include <CGAL_QD/internal/vec3.h>
@@ -41,10 +42,10 @@ namespace internal {
 // fixed) defines on the band vertices a signed distance phi, positive on the A
 // side. The band is cut along phi = 0: a new vertex on every edge where phi
 // changes sign, the faces split, and every face relabelled by the sign of phi.
-// The cut is planned on a copy of the combinatorics of A and B and checked
-// (both charts connected, same Euler characteristic, border loops and pinch
-// vertices, the same border edges at the curve's ends, no degenerate
-// triangle) before the mesh is changed.
+// The cut is planned on a copy of the combinatorics of A and B (`Band_cut`,
+// band_cut.h) and checked (both charts connected, same Euler characteristic,
+// border loops and pinch vertices, the same border edges at the curve's ends,
+// no degenerate triangle) before the mesh is changed.
 template <class TriangleMesh, class VPM, class FaceChartMap, class ECM>
 class Chart_boundary_smoother
 {
@@ -59,8 +60,7 @@ class Chart_boundary_smoother
   typedef std::array<double, 3> P;
 
 public:
-  static constexpr double snap_fraction = 0.2;       // crossings closer to a vertex snap onto it
-  static constexpr double smooth_enough = 1.01;      // curves below this zigzag are left alone
+  static constexpr double smooth_enough = 1.01;  // curves below this zigzag are left alone
 
   Chart_boundary_smoother(TriangleMesh& tm, VPM vpm, FaceChartMap chart, ECM ecm, double sharp_angle_degrees,
                           std::size_t rings, std::size_t rounds)
@@ -130,14 +130,13 @@ public:
     m_mean_edge = polyline_length(m_original, closed) / double(ne);
 
     build_charts();
-    for(int label = 0; label < 2; ++label) m_before[label] = labelled_topology(m_tris, label, m_nodes.size());
+    for(int label = 0; label < 2; ++label) m_before[label] = labelled_topology(m_cut.tris, label, m_cut.nodes.size());
     for(std::size_t rounds = m_rounds; rounds >= 2; rounds /= 2) {
       if(!compute_phi(rounds)) continue;
-      remove_islands();
-      snap();
-      remove_islands();
-      if(!plan()) continue;
-      if(!verify()) continue;
+      m_cut.remove_islands();
+      m_cut.snap();
+      m_cut.remove_islands();
+      if(!plan_and_verify()) continue;
       measure_move();
       apply();
       return Outcome::SMOOTHED;
@@ -163,38 +162,29 @@ private:
   }
 
   // ------------------------------------------------- the two charts, as ids
-  struct Node
-  {
-    vertex_descriptor v;
-    P p;
-    int side = 0;         // +1: only A faces, -1: only B faces, 0: both
-    bool locked = false;  // next to a face outside the band, the mesh border or a constrained edge
-    bool fixed = false;   // phi stays 0
-    bool in_band = false;
-    int curve_index = -1;  // index in the curve, or -1
-    double phi = 0, raw = 0;
-  };
+  typedef Band_node Node;
   typedef Labelled_triangle Tri;  // label 0: A, 1: B
 
   std::size_t node_of(vertex_descriptor v)
   {
     auto it = m_node_id.find(v);
     if(it != m_node_id.end()) return it->second;
-    m_node_id.emplace(v, m_nodes.size());
+    m_node_id.emplace(v, m_cut.nodes.size());
     Node n;
-    n.v = v;
     n.p = point(v);
-    m_nodes.push_back(n);
-    return m_nodes.size() - 1;
+    m_cut.nodes.push_back(n);
+    m_vertex.push_back(v);
+    return m_cut.nodes.size() - 1;
   }
 
   void build_charts()
   {
-    m_nodes.clear();
+    m_cut.nodes.clear();
+    m_vertex.clear();
     m_node_id.clear();
     m_faces.clear();
     m_face_id.clear();
-    m_tris.clear();
+    m_cut.tris.clear();
     // every face of A and B, by breadth-first search from the curve
     for(int s = 0; s < 2; ++s) {
       const Label label = s == 0 ? m_a : m_b;
@@ -210,18 +200,18 @@ private:
           if(m_face_id.emplace(face(o, m_tm), m_faces.size()).second) m_faces.push_back(face(o, m_tm));
         }
     }
-    m_tris.resize(m_faces.size());
+    m_cut.tris.resize(m_faces.size());
     for(std::size_t i = 0; i < m_faces.size(); ++i) {
       const halfedge_descriptor h = halfedge(m_faces[i], m_tm);
-      m_tris[i].n = {node_of(source(h, m_tm)), node_of(target(h, m_tm)), node_of(target(next(h, m_tm), m_tm))};
-      m_tris[i].label = get(m_chart, m_faces[i]) == m_a ? 0 : 1;
+      m_cut.tris[i].n = {node_of(source(h, m_tm)), node_of(target(h, m_tm)), node_of(target(next(h, m_tm), m_tm))};
+      m_cut.tris[i].label = get(m_chart, m_faces[i]) == m_a ? 0 : 1;
     }
-    for(std::size_t i = 0; i < m_curve.size(); ++i) m_nodes[node_of(m_curve[i])].curve_index = int(i);
+    for(std::size_t i = 0; i < m_curve.size(); ++i) m_cut.nodes[node_of(m_curve[i])].curve_index = int(i);
 
     // the band: faces of A and B within m_rings vertex rings of the curve
-    m_in_band.assign(m_faces.size(), 0);
+    m_cut.in_band.assign(m_faces.size(), 0);
     std::vector<std::size_t> ring;
-    std::vector<char> reached(m_nodes.size(), 0);
+    std::vector<char> reached(m_cut.nodes.size(), 0);
     for(vertex_descriptor v : m_curve) {
       ring.push_back(m_node_id.at(v));
       reached[ring.back()] = 1;
@@ -229,12 +219,12 @@ private:
     for(std::size_t r = 0; r < m_rings; ++r) {
       std::vector<std::size_t> next_ring;
       for(std::size_t k : ring)
-        for(halfedge_descriptor h : CGAL::halfedges_around_target(m_nodes[k].v, m_tm)) {
+        for(halfedge_descriptor h : CGAL::halfedges_around_target(m_vertex[k], m_tm)) {
           if(is_border(h, m_tm)) continue;
           const auto it = m_face_id.find(face(h, m_tm));
-          if(it == m_face_id.end() || m_in_band[it->second]) continue;
-          m_in_band[it->second] = 1;
-          for(std::size_t x : m_tris[it->second].n)
+          if(it == m_face_id.end() || m_cut.in_band[it->second]) continue;
+          m_cut.in_band[it->second] = 1;
+          for(std::size_t x : m_cut.tris[it->second].n)
             if(!reached[x]) {
               reached[x] = 1;
               next_ring.push_back(x);
@@ -244,12 +234,13 @@ private:
     }
     // sides, locks
     for(std::size_t i = 0; i < m_faces.size(); ++i)
-      if(m_in_band[i])
-        for(std::size_t x : m_tris[i].n) m_nodes[x].in_band = true;
-    for(Node& n : m_nodes) {
+      if(m_cut.in_band[i])
+        for(std::size_t x : m_cut.tris[i].n) m_cut.nodes[x].in_band = true;
+    for(std::size_t x = 0; x < m_cut.nodes.size(); ++x) {
+      Node& n = m_cut.nodes[x];
       if(!n.in_band) continue;
       bool a = false, b = false;
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(n.v, m_tm)) {
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(m_vertex[x], m_tm)) {
         if(get(m_ecm, edge(h, m_tm))) n.locked = true;
         if(is_border(h, m_tm)) {
           n.locked = true;
@@ -257,15 +248,15 @@ private:
         }
         if(is_border(opposite(h, m_tm), m_tm)) n.locked = true;
         const auto it = m_face_id.find(face(h, m_tm));
-        if(it == m_face_id.end() || !m_in_band[it->second]) n.locked = true;
-        if(it != m_face_id.end()) (m_tris[it->second].label == 0 ? a : b) = true;
+        if(it == m_face_id.end() || !m_cut.in_band[it->second]) n.locked = true;
+        if(it != m_face_id.end()) (m_cut.tris[it->second].label == 0 ? a : b) = true;
       }
       n.side = a && b ? 0 : (a ? 1 : -1);
       // on this curve: fixed where the curve is; elsewhere on A and B's border: fixed
       n.fixed = n.curve_index >= 0 ? bool(m_fixed[std::size_t(n.curve_index)]) : n.side == 0;
     }
     for(std::size_t i = 0; i < m_curve.size(); ++i) {
-      Node& n = m_nodes[m_node_id.at(m_curve[i])];
+      Node& n = m_cut.nodes[m_node_id.at(m_curve[i])];
       if(n.locked) n.fixed = true;  // a curve vertex next to a cut or the border stays
     }
   }
@@ -275,7 +266,7 @@ private:
   {
     const std::size_t nv = m_curve.size(), ne = m_closed ? nv : nv - 1;
     std::vector<char> fixed(nv, 0);
-    for(std::size_t i = 0; i < nv; ++i) fixed[i] = m_nodes[m_node_id.at(m_curve[i])].fixed;
+    for(std::size_t i = 0; i < nv; ++i) fixed[i] = m_cut.nodes[m_node_id.at(m_curve[i])].fixed;
     m_target = m_original;
     smooth_polyline(m_target, m_closed, rounds, fixed);
     // vertex normals of the curve, from the faces of A and B
@@ -291,7 +282,7 @@ private:
       const double l = vec3::norm(normals[i]);
       if(l > 0) for(double& x : normals[i]) x /= l;
     }
-    for(Node& n : m_nodes) {
+    for(Node& n : m_cut.nodes) {
       n.phi = n.raw = 0;
       if(!n.in_band) {
         n.phi = n.raw = n.side;
@@ -345,240 +336,30 @@ private:
     return true;
   }
 
-  // Flips the sign of every component of positive (negative) band vertices,
-  // connected through band edges, that reaches no locked vertex of side A (B):
-  // it would be an island of one chart inside the other.
-  void remove_islands()
-  {
-    std::vector<std::vector<std::size_t>> adjacent(m_nodes.size());
-    for(std::size_t i = 0; i < m_tris.size(); ++i)
-      if(m_in_band[i])
-        for(int k = 0; k < 3; ++k) adjacent[m_tris[i].n[k]].push_back(m_tris[i].n[(k + 1) % 3]);
-    for(int sign : {1, -1}) {
-      std::vector<int> component(m_nodes.size(), -1);
-      std::vector<char> anchored;
-      std::vector<std::size_t> size;
-      for(std::size_t x = 0; x < m_nodes.size(); ++x) {
-        if(!m_nodes[x].in_band || !(m_nodes[x].phi * sign > 0) || component[x] >= 0) continue;
-        const int c = int(anchored.size());
-        anchored.push_back(0);
-        size.push_back(0);
-        std::vector<std::size_t> queue{x};
-        component[x] = c;
-        for(std::size_t q = 0; q < queue.size(); ++q) {
-          const Node& n = m_nodes[queue[q]];
-          ++size.back();
-          if(n.locked && n.side == sign) anchored.back() = 1;
-          for(std::size_t y : adjacent[queue[q]])
-            if(component[y] < 0 && m_nodes[y].phi * sign > 0) {
-              component[y] = c;
-              queue.push_back(y);
-            }
-        }
-      }
-      if(std::find(anchored.begin(), anchored.end(), 1) == anchored.end()) {
-        // no anchor at all (a chart inside the band): keep the largest component
-        if(size.empty()) continue;
-        anchored[std::size_t(std::max_element(size.begin(), size.end()) - size.begin())] = 1;
-      }
-      for(std::size_t x = 0; x < m_nodes.size(); ++x)
-        if(component[x] >= 0 && !anchored[std::size_t(component[x])]) m_nodes[x].phi = -m_nodes[x].phi;
-    }
-  }
-
-  void snap()
-  {
-    std::vector<char> snap(m_nodes.size(), 0);
-    for(std::size_t i = 0; i < m_tris.size(); ++i) {
-      if(!m_in_band[i]) continue;
-      for(int k = 0; k < 3; ++k) {
-        const std::size_t u = m_tris[i].n[k], v = m_tris[i].n[(k + 1) % 3];
-        const double pu = m_nodes[u].phi, pv = m_nodes[v].phi;
-        if(!(pu * pv < 0)) continue;
-        const double t = pu / (pu - pv);  // from u
-        if(t < snap_fraction && !m_nodes[u].locked) snap[u] = 1;
-        if(t > 1 - snap_fraction && !m_nodes[v].locked) snap[v] = 1;
-      }
-    }
-    for(std::size_t x = 0; x < m_nodes.size(); ++x)
-      if(snap[x]) m_nodes[x].phi = 0;
-  }
-
-  // ------------------------------------------------------------------ plan
-  static std::uint64_t key(std::size_t a, std::size_t b) { return edge_key(a, b); }
-
-  double phi_of(std::size_t x) const { return x < m_nodes.size() ? m_nodes[x].phi : 0.; }
-  const P& position(std::size_t x) const { return x < m_nodes.size() ? m_nodes[x].p : m_new_points[x - m_nodes.size()]; }
+  // the point of node x, as the kernel's
   Point kernel_point(std::size_t x) const
   {
-    if(x < m_nodes.size()) return get(m_vpm, m_nodes[x].v);
-    const P& p = m_new_points[x - m_nodes.size()];
+    if(x < m_cut.nodes.size()) return get(m_vpm, m_vertex[x]);
+    const P& p = m_cut.new_points[x - m_cut.nodes.size()];
     return Point(p[0], p[1], p[2]);
   }
 
-  int label_of(const std::array<std::size_t, 3>& t, int fallback) const
+  // ------------------------------------------------------- plan and checks
+  // the cut planned along phi = 0 (no degenerate triangle) and checked
+  bool plan_and_verify()
   {
-    double s = 0;
-    for(std::size_t x : t) {
-      if(phi_of(x) > 0) return 0;
-      if(phi_of(x) < 0) return 1;
-      if(x < m_nodes.size()) s += m_nodes[x].raw;
-    }
-    return s > 0 ? 0 : (s < 0 ? 1 : fallback);
-  }
-
-  bool degenerate(std::size_t a, std::size_t b, std::size_t c) const
-  {
-    return typename Kernel::Collinear_3()(kernel_point(a), kernel_point(b), kernel_point(c));
-  }
-
-  // smallest angle of a triangle, as its sine-like measure: twice the area over the longest edge squared
-  double quality(std::size_t a, std::size_t b, std::size_t c) const
-  {
-    const P &pa = position(a), &pb = position(b), &pc = position(c);
-    const double l = (std::max)({vec3::dot(vec3::sub(pa, pb), vec3::sub(pa, pb)), vec3::dot(vec3::sub(pb, pc), vec3::sub(pb, pc)),
-                                 vec3::dot(vec3::sub(pc, pa), vec3::sub(pc, pa))});
-    return l > 0 ? vec3::norm(vec3::cross(vec3::sub(pb, pa), vec3::sub(pc, pa))) / l : 0.;
-  }
-
-  struct Face_plan
-  {
-    std::size_t face;                                      // index in m_faces
-    std::vector<std::pair<std::size_t, std::size_t>> cuts;  // diagonals, in order
-    std::vector<Tri> tris;
-  };
-
-  bool plan()
-  {
-    m_new_points.clear();
-    m_split_edges.clear();
-    m_split_node.clear();
-    m_plans.clear();
-    m_after = m_tris;
-    m_new_tris.clear();
-    const std::size_t base = m_nodes.size();
-    for(std::size_t i = 0; i < m_tris.size(); ++i) {
-      if(!m_in_band[i]) continue;
-      const Tri& t = m_tris[i];
-      std::vector<std::size_t> poly;
-      for(int k = 0; k < 3; ++k) {
-        const std::size_t u = t.n[k], v = t.n[(k + 1) % 3];
-        poly.push_back(u);
-        const double pu = m_nodes[u].phi, pv = m_nodes[v].phi;
-        if(!(pu * pv < 0)) continue;
-        auto it = m_split_node.find(key(u, v));
-        if(it == m_split_node.end()) {
-          const std::size_t plus = pu > 0 ? u : v, minus = pu > 0 ? v : u;
-          const double fp = m_nodes[plus].phi, fm = m_nodes[minus].phi;
-          const double s = (std::max)(snap_fraction, (std::min)(1 - snap_fraction, fp / (fp - fm)));
-          const P& a = m_nodes[plus].p;
-          const P& b = m_nodes[minus].p;
-          m_new_points.push_back({a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), a[2] + s * (b[2] - a[2])});
-          it = m_split_node.emplace(key(u, v), base + m_new_points.size() - 1).first;
-          m_split_edges.push_back({plus, minus});
-        }
-        poly.push_back(it->second);
-      }
-      if(poly.size() == 3) {
-        m_after[i].label = label_of(t.n, t.label);
-        continue;
-      }
-      // the two zeros of the polygon, not adjacent
-      std::vector<std::size_t> zeros;
-      for(std::size_t k = 0; k < poly.size(); ++k)
-        if(phi_of(poly[k]) == 0) zeros.push_back(k);
-      if(zeros.size() != 2 || zeros[1] - zeros[0] < 2 || zeros[1] - zeros[0] > poly.size() - 2) return false;
-      Face_plan fp;
-      fp.face = i;
-      fp.cuts.push_back({poly[zeros[0]], poly[zeros[1]]});
-      for(int part = 0; part < 2; ++part) {
-        std::vector<std::size_t> sub_poly;
-        const std::size_t from = zeros[part], to = zeros[1 - part];
-        for(std::size_t k = from;; k = (k + 1) % poly.size()) {
-          sub_poly.push_back(poly[k]);
-          if(k == to) break;
-        }
-        if(sub_poly.size() == 3) {
-          fp.tris.push_back({{sub_poly[0], sub_poly[1], sub_poly[2]}, 0});
-        }
-        else if(sub_poly.size() == 4) {
-          const std::size_t* q = sub_poly.data();
-          const double d02 = (std::min)(quality(q[0], q[1], q[2]), quality(q[0], q[2], q[3]));
-          const double d13 = (std::min)(quality(q[1], q[2], q[3]), quality(q[1], q[3], q[0]));
-          if(d02 >= d13) {
-            fp.cuts.push_back({q[0], q[2]});
-            fp.tris.push_back({{q[0], q[1], q[2]}, 0});
-            fp.tris.push_back({{q[0], q[2], q[3]}, 0});
-          }
-          else {
-            fp.cuts.push_back({q[1], q[3]});
-            fp.tris.push_back({{q[1], q[2], q[3]}, 0});
-            fp.tris.push_back({{q[1], q[3], q[0]}, 0});
-          }
-        }
-        else
-          return false;
-      }
-      for(Tri& x : fp.tris) {
-        x.label = label_of(x.n, t.label);
-        if(degenerate(x.n[0], x.n[1], x.n[2])) return false;
-      }
-      m_after[i] = fp.tris[0];
-      for(std::size_t k = 1; k < fp.tris.size(); ++k) m_new_tris.push_back(fp.tris[k]);
-      m_plans.push_back(std::move(fp));
-    }
-    m_after.insert(m_after.end(), m_new_tris.begin(), m_new_tris.end());
-    return true;
-  }
-
-  // ---------------------------------------------------------------- checks
-  bool verify()
-  {
-    const std::size_t total = m_nodes.size() + m_new_points.size();
-    for(int label = 0; label < 2; ++label) {
-      const Labelled_topology after = labelled_topology(m_after, label, total);
-      if(!(m_before[label] == after) || after.components != 1) return false;
-    }
-    if(!m_closed) {
-      std::vector<Tri> near_before, near_after;
-      for(std::size_t x : {m_node_id.at(m_curve.front()), m_node_id.at(m_curve.back())}) {
-        near_before.clear();
-        near_after.clear();
-        for(const Tri& t : m_tris)
-          if(t.n[0] == x || t.n[1] == x || t.n[2] == x) near_before.push_back(t);
-        for(const Tri& t : m_after)
-          if(t.n[0] == x || t.n[1] == x || t.n[2] == x) near_after.push_back(t);
-        if(border_edges_at(near_before, x) != border_edges_at(near_after, x)) return false;
-      }
-    }
-    // something must change
-    bool changed = !m_new_points.empty();
-    for(std::size_t i = 0; i < m_tris.size() && !changed; ++i) changed = m_after[i].label != m_tris[i].label;
-    return changed;
+    if(!m_cut.plan([&](std::size_t a, std::size_t b, std::size_t c) {
+         return typename Kernel::Collinear_3()(kernel_point(a), kernel_point(b), kernel_point(c));
+       }))
+      return false;
+    std::vector<std::size_t> ends;
+    if(!m_closed) ends = {m_node_id.at(m_curve.front()), m_node_id.at(m_curve.back())};
+    return m_cut.verify(m_before, ends);
   }
 
   void measure_move()
   {
-    // the new border: edges of the planned triangles between A and B near the curve
-    std::unordered_map<std::uint64_t, int> mask;
-    for(std::size_t i = 0; i < m_after.size(); ++i) {
-      if(i < m_tris.size() && !m_in_band[i]) continue;
-      for(int k = 0; k < 3; ++k) mask[key(m_after[i].n[k], m_after[i].n[(k + 1) % 3])] |= (1 << m_after[i].label);
-    }
-    std::vector<std::pair<P, P>> segments;
-    for(const auto& m : mask)
-      if(m.second == 3) segments.push_back({position(std::size_t(m.first >> 32)), position(std::size_t(m.first & 0xffffffffu))});
-    double move = 0;
-    for(const auto& s : segments)
-      for(const P& p : {s.first, s.second}) move = (std::max)(move, vec3::polyline_distance(p, m_original, m_closed));
-    for(const P& p : m_original) {
-      double best = -1, t;
-      for(const auto& s : segments) {
-        const double d = vec3::segment_distance(p, s.first, s.second, t);
-        if(best < 0 || d < best) best = d;
-      }
-      move = (std::max)(move, (std::max)(best, 0.));
-    }
+    const double move = m_cut.move(m_original, m_closed);
     max_move = (std::max)(max_move, move);
     if(m_mean_edge > 0) max_relative_move = (std::max)(max_relative_move, move / m_mean_edge);
   }
@@ -586,25 +367,25 @@ private:
   // ----------------------------------------------------------------- apply
   void apply()
   {
-    std::vector<vertex_descriptor> vertex_of(m_nodes.size() + m_new_points.size());
-    for(std::size_t x = 0; x < m_nodes.size(); ++x) vertex_of[x] = m_nodes[x].v;
-    for(std::size_t k = 0; k < m_split_edges.size(); ++k) {
-      const std::size_t plus = m_split_edges[k].first, minus = m_split_edges[k].second;
-      const halfedge_descriptor h = halfedge(m_nodes[plus].v, m_nodes[minus].v, m_tm).first;
+    std::vector<vertex_descriptor> vertex_of(m_cut.nodes.size() + m_cut.new_points.size());
+    for(std::size_t x = 0; x < m_cut.nodes.size(); ++x) vertex_of[x] = m_vertex[x];
+    for(std::size_t k = 0; k < m_cut.split_edges.size(); ++k) {
+      const std::size_t plus = m_cut.split_edges[k].first, minus = m_cut.split_edges[k].second;
+      const halfedge_descriptor h = halfedge(m_vertex[plus], m_vertex[minus], m_tm).first;
       const bool constrained = get(m_ecm, edge(h, m_tm));
       const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, m_tm);
       const vertex_descriptor w = target(hnew, m_tm);
-      const P& p = m_new_points[k];
+      const P& p = m_cut.new_points[k];
       put(m_vpm, w, Point(p[0], p[1], p[2]));
       if(constrained) {
         put(m_ecm, edge(hnew, m_tm), true);
         put(m_ecm, edge(h, m_tm), true);
       }
-      vertex_of[m_nodes.size() + k] = w;
-      m_node_id.emplace(w, m_nodes.size() + k);
+      vertex_of[m_cut.nodes.size() + k] = w;
+      m_node_id.emplace(w, m_cut.nodes.size() + k);
       ++vertices_added;
     }
-    for(const Face_plan& fp : m_plans) {
+    for(const Band_cut::Face_plan& fp : m_cut.plans) {
       std::vector<face_descriptor> parts{m_faces[fp.face]};
       for(const auto& cut : fp.cuts) {
         const vertex_descriptor x = vertex_of[cut.first], y = vertex_of[cut.second];
@@ -629,15 +410,15 @@ private:
           const vertex_descriptor v = target(e, m_tm);
           t[std::size_t(k++ % 3)] = m_node_id.at(v);
         }
-        put(m_chart, g, label_of(t, m_tris[fp.face].label) == 0 ? m_a : m_b);
+        put(m_chart, g, m_cut.label_of(t, m_cut.tris[fp.face].label) == 0 ? m_a : m_b);
       }
     }
     // faces without a split that changed sides
-    std::vector<char> split(m_tris.size(), 0);
-    for(const Face_plan& fp : m_plans) split[fp.face] = 1;
-    for(std::size_t i = 0; i < m_tris.size(); ++i)
-      if(m_in_band[i] && m_after[i].label != m_tris[i].label && !split[i])
-        put(m_chart, m_faces[i], m_after[i].label == 0 ? m_a : m_b);
+    std::vector<char> split(m_cut.tris.size(), 0);
+    for(const Band_cut::Face_plan& fp : m_cut.plans) split[fp.face] = 1;
+    for(std::size_t i = 0; i < m_cut.tris.size(); ++i)
+      if(m_cut.in_band[i] && m_cut.after[i].label != m_cut.tris[i].label && !split[i])
+        put(m_chart, m_faces[i], m_cut.after[i].label == 0 ? m_a : m_b);
   }
 
   TriangleMesh& m_tm;
@@ -652,19 +433,15 @@ private:
   bool m_closed = false;
   Label m_a{}, m_b{};
   std::vector<char> m_kept, m_fixed;
-  std::vector<P> m_original, m_target, m_new_points;
+  std::vector<P> m_original, m_target;
   double m_mean_edge = 0;
 
-  std::vector<Node> m_nodes;
+  Band_cut m_cut;                       // the copy of A and B, and the cut planned on it
+  std::vector<vertex_descriptor> m_vertex;  // of every node of `m_cut`
   std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor>> m_node_id;
-  std::vector<face_descriptor> m_faces;
+  std::vector<face_descriptor> m_faces;  // of every triangle of `m_cut`
   std::unordered_map<face_descriptor, std::size_t, boost::hash<face_descriptor>> m_face_id;
-  std::vector<Tri> m_tris, m_after, m_new_tris;
   std::array<Labelled_topology, 2> m_before;  // of A and B, before the change
-  std::vector<char> m_in_band;
-  std::unordered_map<std::uint64_t, std::size_t> m_split_node;
-  std::vector<std::pair<std::size_t, std::size_t>> m_split_edges;  // (plus, minus) nodes
-  std::vector<Face_plan> m_plans;
 };
 
 // the edges between two charts, and the constrained edges
