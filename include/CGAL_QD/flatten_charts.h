@@ -168,7 +168,11 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   std::vector<std::uint32_t> local(nf, 0);
   for(const std::vector<face_descriptor>& m : members)
     for(std::size_t i = 0; i < m.size(); ++i) local[get(fim, m[i])] = static_cast<std::uint32_t>(i);
-  for_each_index<ConcurrencyTag>(n, [&](std::size_t k) {
+  std::vector<std::size_t> size(n);
+  for(std::size_t k = 0; k < n; ++k) size[k] = members[k].size();
+  const std::vector<std::size_t> largest_first = dearest_first(size);
+  for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
+    const std::size_t k = largest_first[i];
     if(!members[k].empty()) result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
   });
   const std::array<double, 2> origin = {0., 0.};
@@ -241,7 +245,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     std::vector<std::vector<std::array<double, 2>>> fitted_uv, first(n);
     auto fit = [&](double pull_weight, bool exact) {
       list.clear();
-      for(std::size_t k = 0; k < n; ++k)
+      for(std::size_t k : largest_first)
         if(todo[k] && !kept[k] && result.charts[k].accepted) list.push_back(k);
       fitted.assign(list.size(), Chart_report());
       fitted_uv.assign(list.size(), {});

@@ -75,7 +75,11 @@ public:
       std::vector<std::vector<face_descriptor>> members(m_n);
       for(std::size_t i = 0; i < m_chart.size(); ++i) members[m_chart[i]].push_back(m_face_of[i]);
       std::vector<char> ok(todo.size(), 0);
-      for_each_index<ConcurrencyTag>(todo.size(), [&](std::size_t t) {
+      std::vector<std::size_t> size(todo.size());
+      for(std::size_t t = 0; t < todo.size(); ++t) size[t] = members[todo[t]].size();
+      const std::vector<std::size_t> largest_first = dearest_first(size);
+      for_each_index<ConcurrencyTag>(todo.size(), [&](std::size_t i) {
+        const std::size_t t = largest_first[i];
         ok[t] = members[todo[t]].size() <= 1 || m_eval.evaluate(members[todo[t]], no_cut).accepted;
       });
       std::vector<std::size_t> next;
@@ -217,8 +221,18 @@ public:
       std::vector<std::size_t> to_evaluate;
       for(std::size_t c : take)
         if(!cache_valid(c)) to_evaluate.push_back(c);
-      for_each_index<ConcurrencyTag>(to_evaluate.size(), [&](std::size_t t) {
-        const std::size_t c = to_evaluate[t];
+      // the largest merged charts first
+      std::vector<std::size_t> size(to_evaluate.size(), 0);
+      for(std::size_t t = 0; t < to_evaluate.size(); ++t) {
+        const std::size_t r1 = find(m_curves[to_evaluate[t]].a), r2 = find(m_curves[to_evaluate[t]].b);
+        for(std::size_t r : {r1, r2}) {
+          for(std::size_t k : m_members[r]) size[t] += m_faces_of_chart[k].size();
+          if(r1 == r2) break;
+        }
+      }
+      const std::vector<std::size_t> largest_first = dearest_first(size);
+      for_each_index<ConcurrencyTag>(to_evaluate.size(), [&](std::size_t i) {
+        const std::size_t c = to_evaluate[largest_first[i]];
         Cached x;
         x.r1 = find(m_curves[c].a);
         x.r2 = find(m_curves[c].b);
