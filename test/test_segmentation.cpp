@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -1083,6 +1084,30 @@ BOOST_AUTO_TEST_CASE(parallel_normal_smoothing_is_the_sequential_one)
     BOOST_TEST(smoothed > geo.size() / 2);  // the smoothing did something
     BOOST_TEST(same == geo.size());
   }
+}
+
+BOOST_AUTO_TEST_CASE(parallel_loops_run_every_task_once_dearest_first)
+{
+  // the segmentation's tasks go out from the dearest to the cheapest (ties in index order)
+  BOOST_TEST((QD::internal::dearest_first(std::vector<std::size_t>{3, 1, 3, 7, 2}) ==
+              std::vector<std::size_t>{3, 0, 2, 4, 1}));
+  BOOST_TEST(QD::internal::dearest_first(std::vector<double>{}).empty());
+  // every index run exactly once, whatever the number of tasks and threads
+  for(std::size_t n : {0, 1, 2, 3, 7, 1000}) {
+    std::vector<std::atomic<int>> runs(n);
+    for(std::atomic<int>& r : runs) r = 0;
+    QD::internal::for_each_index<CGAL::Parallel_tag>(n, [&](std::size_t i) { ++runs[i]; });
+    std::size_t once = 0;
+    for(const std::atomic<int>& r : runs) once += r.load() == 1 ? 1 : 0;
+    BOOST_TEST(once == n, n << " tasks");
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  // with one thread, in the order given
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+  std::vector<std::size_t> order;
+  QD::internal::for_each_index<CGAL::Parallel_tag>(5, [&](std::size_t i) { order.push_back(i); });
+  BOOST_TEST((order == std::vector<std::size_t>{0, 1, 2, 3, 4}));
+#endif
 }
 
 // The full series of doc/segmentation_results.md, too slow for every run:
