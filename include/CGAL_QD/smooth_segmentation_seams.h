@@ -75,8 +75,9 @@ struct Seam_smoothing_result
 /// edges. Where every chart is accepted, the seams are fitted to common
 /// lengths as `flatten_charts()` does, and a seam (a border between two
 /// charts, or the cuts of a chart) that no longer matches in length where it
-/// did (its two sides within 0.5 %) or whose sides end further apart than the
-/// worst seam of the input is smoothed less in the same way; once it follows
+/// did (its two sides within 0.5 %), or that did not match and whose sides end
+/// further apart than the worst seam of the input, is smoothed less in the
+/// same way; once it follows
 /// the edges, the curves of its charts are (or, where those follow the edges
 /// too, of the charts next to them). Each curve goes one step per try, at most
 /// 10 tries. The try kept is the one with every chart accepted and the most
