@@ -192,6 +192,70 @@ BOOST_AUTO_TEST_CASE(solver_choice_and_fallback)
   }
 }
 
+// Size_adaptive_solver, the default: SimplicialLDLT below its threshold, the
+// supernodal CHOLMOD factorisation from it (where CMake found CHOLMOD), with
+// the same UVs to 1e-9, and SimplicialLDLT again where CHOLMOD cannot
+// factorise (an indefinite matrix)
+BOOST_AUTO_TEST_CASE(size_adaptive_solver_switches_and_falls_back)
+{
+  BOOST_TEST(QD::Default_flattening_solver().supernodal_threshold() == 100000u);
+  const Surface_mesh tm = make<Surface_mesh>(grid(24, 24, bump(0.3), holes({{5, 9, 5, 12}})));
+  const auto ldlt = flatten(tm, QD::parameters::sparse_solver(QD::Simplicial_LDLT_solver()));
+  const auto below = flatten(tm);
+  BOOST_TEST(below.result.solver == "SimplicialLDLT");
+  const auto above = flatten(tm, QD::parameters::sparse_solver(QD::Size_adaptive_solver(1)));
+#ifdef CGAL_QD_USE_CHOLMOD
+  BOOST_TEST(above.result.solver == "CHOLMOD supernodal");
+#else
+  BOOST_TEST(above.result.solver == "SimplicialLDLT");
+#endif
+  BOOST_TEST(!above.result.used_fallback);
+#ifdef CGAL_QD_USE_CHOLMOD
+  // the symbolic analysis ran ahead, on the pattern found from the mesh
+  BOOST_TEST(above.result.time_analysis_ms > 0);
+#endif
+  BOOST_TEST(below.result.time_analysis_ms == 0);
+  for(auto v : vertices(tm)) {
+    BOOST_TEST((below.uv.at(v)[0] == ldlt.uv.at(v)[0] && below.uv.at(v)[1] == ldlt.uv.at(v)[1]));
+    BOOST_TEST(std::hypot(above.uv.at(v)[0] - ldlt.uv.at(v)[0], above.uv.at(v)[1] - ldlt.uv.at(v)[1]) < 1e-9);
+  }
+
+  // symmetric and indefinite (eigenvalues of both signs), lower triangle
+  Eigen::SparseMatrix<double> A(3, 3);
+  std::vector<Eigen::Triplet<double>> t = {{0, 0, 2.}, {1, 0, 1.}, {1, 1, -3.}, {2, 1, 0.5}, {2, 2, 4.}};
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::MatrixXd B(3, 2), X;
+  B << 1., 0., 2., -1., 0.5, 3.;
+  QD::Size_adaptive_solver solver(1);
+  BOOST_REQUIRE(solver.factorize(A));
+  BOOST_TEST(std::string(solver.name()) == "SimplicialLDLT");
+  BOOST_REQUIRE(solver.solve(B, X));
+  const Eigen::MatrixXd residual = A.selfadjointView<Eigen::Lower>() * X - B;
+  BOOST_TEST(residual.norm() < 1e-12);
+#ifdef CGAL_QD_USE_CHOLMOD
+  {
+    // an analysis ahead is used for a matrix of its pattern, and a matrix of
+    // another pattern is analysed anew: the same solutions either way
+    Eigen::SparseMatrix<double> spd(3, 3), other(3, 3);
+    std::vector<Eigen::Triplet<double>> a = {{0, 0, 4.}, {1, 0, 1.}, {1, 1, 3.}, {2, 1, 0.5}, {2, 2, 2.}};
+    spd.setFromTriplets(a.begin(), a.end());
+    a.push_back({2, 0, 0.25});
+    other.setFromTriplets(a.begin(), a.end());
+    for(const Eigen::SparseMatrix<double>* M : {&spd, &other}) {
+      QD::Cholmod_supernodal_solver cholmod;
+      BOOST_REQUIRE(cholmod.analyze(spd));
+      BOOST_REQUIRE(cholmod.factorize(*M));
+      BOOST_REQUIRE(cholmod.solve(B, X));
+      BOOST_TEST((M->selfadjointView<Eigen::Lower>() * X - B).norm() < 1e-12);
+    }
+  }
+#endif
+  // a copy has no factorisation
+  QD::Size_adaptive_solver copy(solver);
+  BOOST_TEST(!copy.solve(B, X));
+  BOOST_TEST(copy.supernodal_threshold() == 1u);
+}
+
 // Simplicial_LDLT_solver solves all the columns of a right-hand side in one
 // pass over the factor: the same numbers, to the last bit, as Eigen's solve()
 // column by column, with the AMD and the natural ordering, for 1 to 3 columns

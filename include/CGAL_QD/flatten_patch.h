@@ -14,16 +14,13 @@
 #include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/validation.h>
+#include <CGAL_QD/sparse_solvers.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
-#ifdef CGAL_QD_USE_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -34,144 +31,11 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
 namespace CGAL_QD {
-namespace internal {
-
-template <class EigenSolver>
-struct Is_simplicial_LDLT : std::false_type
-{};
-template <class Matrix, int UpLo, class Ordering>
-struct Is_simplicial_LDLT<Eigen::SimplicialLDLT<Matrix, UpLo, Ordering>> : std::true_type
-{};
-
-// X = A^-1 B with the factorisation P A P^T = L D L^T of `ldlt`. A B of two
-// columns (the u and v of a flattening) is solved in one pass over L for each
-// triangular solve, where Eigen makes one per column; every column goes
-// through the same operations in the same order as in Eigen's
-// SimplicialLDLT::solve(), so X is the same to the last bit. Any other B, or
-// an L not in compressed storage, goes to Eigen's solve().
-template <class Solver>
-void solve_ldlt_columns(const Solver& ldlt, const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
-{
-  const auto& L = ldlt.matrixL().nestedExpression();  // strictly lower part, by columns
-  if(B.cols() != 2 || L.innerNonZeroPtr()) {
-    X = ldlt.solve(B);
-    return;
-  }
-  // the two columns of a row side by side
-  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> y;
-  if(ldlt.permutationP().size() > 0) y = ldlt.permutationP() * B;
-  else y = B;  // natural ordering
-  double* Y = y.data();
-  const Eigen::Index n = L.cols();
-  const auto* outer = L.outerIndexPtr();
-  const auto* inner = L.innerIndexPtr();
-  const double* value = L.valuePtr();
-  const auto& d = ldlt.vectorD();
-  // L y = y
-  for(Eigen::Index j = 0; j < n; ++j) {
-    const double a = Y[2 * j], b = Y[2 * j + 1];
-    if(a == 0 && b == 0) continue;
-    for(auto p = outer[j], e = outer[j + 1]; p < e; ++p) {
-      double* yi = Y + 2 * inner[p];
-      if(a != 0) yi[0] -= a * value[p];
-      if(b != 0) yi[1] -= b * value[p];
-    }
-  }
-  // D y = y
-  for(Eigen::Index i = 0; i < n; ++i) {
-    const double inverse = 1. / d[i];
-    Y[2 * i] = inverse * Y[2 * i];
-    Y[2 * i + 1] = inverse * Y[2 * i + 1];
-  }
-  // L^T y = y
-  for(Eigen::Index j = n - 1; j >= 0; --j) {
-    double a = Y[2 * j], b = Y[2 * j + 1];
-    for(auto p = outer[j], e = outer[j + 1]; p < e; ++p) {
-      const double* yi = Y + 2 * inner[p];
-      a -= value[p] * yi[0];
-      b -= value[p] * yi[1];
-    }
-    Y[2 * j] = a;
-    Y[2 * j + 1] = b;
-  }
-  if(ldlt.permutationPinv().size() > 0) X = ldlt.permutationPinv() * y;
-  else X = y;
-}
-
-} // namespace internal
-
-/// \ingroup PkgCGAL_QDRef
-/// A sparse direct solver of symmetric systems for `flatten_patch()`, wrapping
-/// an Eigen solver that reads the lower triangle (`SimplicialLDLT`,
-/// `SimplicialLLT`, `CholmodSupernodalLLT`, `CholmodDecomposition`, ...).
-/// A model of the solver concept of `flatten_patch()`: `factorize(A)` then
-/// `solve(B, X)` for a matrix `B` with several columns, both returning whether
-/// they succeeded, and `name()`.
-template <class EigenSolver>
-class Eigen_symmetric_solver
-{
-public:
-  typedef Eigen::SparseMatrix<double> Matrix;
-  explicit Eigen_symmetric_solver(const char* name) : m_name(name) {}
-  /// copies the configuration, not a factorisation (Eigen's solvers are not all copyable)
-  Eigen_symmetric_solver(const Eigen_symmetric_solver& other) : m_name(other.m_name) {}
-  Eigen_symmetric_solver& operator=(const Eigen_symmetric_solver& other)
-  {
-    m_solver.reset();
-    m_name = other.m_name;
-    return *this;
-  }
-  bool factorize(const Matrix& lower)
-  {
-    m_solver.reset(new EigenSolver);
-    m_solver->compute(lower);
-    return m_solver->info() == Eigen::Success;
-  }
-  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
-  {
-    if(!m_solver) return false;
-    if constexpr(internal::Is_simplicial_LDLT<EigenSolver>::value) {
-      if(m_solver->info() != Eigen::Success || m_solver->rows() != B.rows()) return false;
-      internal::solve_ldlt_columns(*m_solver, B, X);
-    } else {
-      X = m_solver->solve(B);
-    }
-    return m_solver->info() == Eigen::Success && X.allFinite();
-  }
-  const char* name() const { return m_name; }
-
-private:
-  std::unique_ptr<EigenSolver> m_solver;
-  const char* m_name;
-};
-
-/// \ingroup PkgCGAL_QDRef
-/// Eigen's `SimplicialLDLT` with AMD ordering.
-struct Simplicial_LDLT_solver
-    : Eigen_symmetric_solver<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>>
-{
-  Simplicial_LDLT_solver() : Eigen_symmetric_solver("SimplicialLDLT") {}
-};
-
-#ifdef CGAL_QD_USE_CHOLMOD
-/// \ingroup PkgCGAL_QDRef
-/// SuiteSparse's CHOLMOD (it chooses simplicial or supernodal), available when
-/// CMake found it (`CGAL_QD_USE_CHOLMOD` is then defined).
-struct Cholmod_solver
-    : Eigen_symmetric_solver<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower>>
-{
-  Cholmod_solver() : Eigen_symmetric_solver("CHOLMOD") {}
-};
-#endif
-
-/// \ingroup PkgCGAL_QDRef
-/// the default solver of `flatten_patch()`: `Simplicial_LDLT_solver` (see
-/// `doc/performance.md` for the comparison with CHOLMOD).
-typedef Simplicial_LDLT_solver Default_flattening_solver;
 
 /// \ingroup PkgCGAL_QDRef
 /// diagnostics of `flatten_patch()`.
@@ -189,6 +53,10 @@ struct Flattening_result
   double time_border_ms = 0;         ///< validation, virtual cutting and LPFB
   double time_assembly_ms = 0;       ///< cotangent weights and the system
   double time_factorization_ms = 0;  ///< all factorisations, the fallback's included
+  /// the symbolic analysis that a solver such as `Size_adaptive_solver` ran
+  /// ahead, on a second thread, while the border and the system were computed
+  /// (0 where none ran; overlapped, so not part of the total)
+  double time_analysis_ms = 0;
   double time_solve_ms = 0;          ///< the solves for u and v
   double time_total_ms = 0;
 
@@ -226,6 +94,87 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
+// The symbolic analysis of the interior system, run on a second thread by a
+// solver that offers it (`Analyzes_ahead`) for a system of its size, while
+// `flatten_patch()` validates the patch, solves the border and assembles the
+// system. The pattern is found from the mesh alone: a row per vertex that
+// no border halfedge ends at, in the order of `vertices(tm)`, and an entry
+// per edge between two of them, which is the pattern of the system wherever
+// the patch is valid. The solver uses the analysis only if the system has
+// exactly that pattern; any failure here leaves it to analyse the system
+// itself. The thread only reads the mesh.
+template <class Solver>
+class Analysis_ahead
+{
+public:
+  template <class TriangleMesh, class VIM>
+  Analysis_ahead(Solver& solver, const TriangleMesh& tm, const VIM& vim)
+  {
+    if constexpr(Analyzes_ahead<Solver>::value) {
+      if(!solver.analyzes_ahead(static_cast<std::size_t>(num_vertices(tm)))) return;
+      try {
+        m_thread = std::thread([this, &solver, &tm, vim] {
+          const auto start = std::chrono::steady_clock::now();
+          try {
+            analyze(solver, tm, vim);
+          } catch(...) {
+            // the solver analyses the system itself
+          }
+          m_ms = milliseconds_since(start);
+        });
+      } catch(...) {
+        // no thread: the solver analyses the system itself
+      }
+    }
+  }
+  Analysis_ahead(const Analysis_ahead&) = delete;
+  Analysis_ahead& operator=(const Analysis_ahead&) = delete;
+  ~Analysis_ahead() { wait(); }
+
+  // waits for the analysis; its time in ms (0 where none ran)
+  double wait()
+  {
+    if(m_thread.joinable()) m_thread.join();
+    return m_ms;
+  }
+
+private:
+  template <class TriangleMesh, class VIM>
+  static void analyze(Solver& solver, const TriangleMesh& tm, const VIM& vim)
+  {
+    typedef boost::graph_traits<TriangleMesh> GT;
+    const std::size_t nv = num_vertices(tm);
+    std::vector<long> row(nv, 0);
+    for(typename GT::halfedge_descriptor h : halfedges(tm))
+      if(is_border(h, tm)) row[get(vim, target(h, tm))] = -1;
+    long n = 0;
+    for(typename GT::vertex_descriptor v : vertices(tm)) {
+      long& r = row[get(vim, v)];
+      r = halfedge(v, tm) == GT::null_halfedge() || r < 0 ? -1 : n++;
+    }
+    if(!solver.analyzes_ahead(static_cast<std::size_t>(n))) return;
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(3 * static_cast<std::size_t>(num_faces(tm)) + static_cast<std::size_t>(n));
+    for(typename GT::face_descriptor f : faces(tm)) {
+      const typename GT::halfedge_descriptor h = halfedge(f, tm);
+      const long r[3] = {row[get(vim, source(h, tm))], row[get(vim, target(h, tm))],
+                         row[get(vim, target(next(h, tm), tm))]};
+      for(int k = 0; k < 3; ++k) {
+        const long ri = r[(k + 1) % 3], rj = r[(k + 2) % 3];
+        if(ri >= 0 && rj >= 0) t.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), 1.);
+      }
+    }
+    for(long i = 0; i < n; ++i) t.emplace_back(i, i, 1.);
+    Eigen::SparseMatrix<double> pattern(n, n);
+    pattern.setFromTriplets(t.begin(), t.end());
+    std::vector<Eigen::Triplet<double>>().swap(t);
+    solver.analyze(pattern);
+  }
+
+  std::thread m_thread;
+  double m_ms = 0;
+};
+
 } // namespace internal
 
 /// \ingroup PkgCGAL_QDRef
@@ -239,7 +188,10 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point t)
 /// row per interior vertex and is symmetric; it is factorised once and solved
 /// for u and v together. If the solver fails (negative cotangent weights can
 /// make the matrix indefinite) or its residual is poor, `Eigen::SparseLU` solves
-/// the system instead.
+/// the system instead. A solver that can analyse the pattern of the system
+/// ahead (`Size_adaptive_solver` on systems of 100,000 unknowns and more) does
+/// so on a second thread, from the mesh, while the border is solved and the
+/// system assembled.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from vertices to a 2D
@@ -251,8 +203,9 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point t)
 ///        `CGAL_QD::parameters::sparse_solver`: a solver object with `bool
 ///        factorize(const Eigen::SparseMatrix<double>& lower)`, `bool solve(const
 ///        Eigen::MatrixXd& B, Eigen::MatrixXd& X)` and `const char* name()`
-///        (default: `Default_flattening_solver`, that is `Simplicial_LDLT_solver`;
-///        `Cholmod_solver` when CMake found SuiteSparse).
+///        (default: `Default_flattening_solver`, that is `Size_adaptive_solver`:
+///        `Simplicial_LDLT_solver`, and `Cholmod_supernodal_solver` from 100,000
+///        interior vertices where CMake found CHOLMOD; see sparse_solvers.h).
 /// \returns a `Flattening_result`; on a status other than `OK` nothing is written.
 /// The statuses are those of `compute_length_preserved_free_boundary()`, and
 /// `SOLVER_FAILED` when no solver could solve the interior system.
@@ -290,6 +243,7 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
     result.status = Error_code::EMPTY_MESH;
     return result;
   }
+  internal::Analysis_ahead<decltype(solver)> analysis(solver, tm, vim);
 
   // ------------------------------------------------------------- border
   const std::size_t nv = num_vertices(tm);
@@ -370,6 +324,7 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
       const Eigen::MatrixXd residual = A.selfadjointView<Eigen::Lower>() * sol - B;
       return residual.norm() <= 1e-8 * (B.norm() + A.norm() * sol.norm());
     };
+    result.time_analysis_ms = analysis.wait();
     t = std::chrono::steady_clock::now();
     bool ok = solver.factorize(A);
     result.time_factorization_ms = internal::milliseconds_since(t);

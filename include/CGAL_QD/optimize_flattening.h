@@ -296,7 +296,9 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///     of iterations done after every iteration (with `LENGTH_PRESERVED`, of the free iteration, before
 ///     the border is fitted), when `uv` holds the map of that iteration; returning `true` stops the
 ///     iteration there (`Optimization_result::stopped_by_callback`). It may read `uv`, not write it.
-///   - `CGAL_QD::parameters::sparse_solver`: as in `flatten_patch()`
+///   - `CGAL_QD::parameters::sparse_solver`: a solver as in `flatten_patch()` (default:
+///     `Simplicial_LDLT_solver`, whose two-column solves the iteration repeats; a supernodal
+///     factorisation is faster to compute on large patches but slower to solve with)
 ///   - `vertex_point_map`, `vertex_index_map`
 /// \returns an `Optimization_result`: `EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
 ///          `INVALID_COORDINATES` (a non-finite point or UV), `COORDINATES_OUT_OF_RANGE` (a
@@ -323,7 +325,7 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
                                     get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   auto solver = internal::unwrap(
-      choose_parameter<Default_flattening_solver>(get_parameter(np, internal_np::sparse_solver_t())));
+      choose_parameter<Simplicial_LDLT_solver>(get_parameter(np, internal_np::sparse_solver_t())));
   internal::Arap_options opt;
   opt.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), opt.iterations);
   opt.border = choose_parameter(get_parameter(np, internal_np::arap_border_t()), opt.border);

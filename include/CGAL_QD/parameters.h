@@ -74,7 +74,8 @@ CGAL_QD_ADD_NAMED_PARAMETER(angle_tolerance)
 /// iteration of the paper, which can oscillate on strongly curved patches.
 CGAL_QD_ADD_NAMED_PARAMETER(use_line_search)
 /// the solver of `flatten_patch()`'s interior system, a model of its solver
-/// concept (default: `Default_flattening_solver`).
+/// concept (default: `Default_flattening_solver`), or of the global step of
+/// `optimize_flattening()` (default: `Simplicial_LDLT_solver`).
 CGAL_QD_ADD_NAMED_PARAMETER(sparse_solver)
 /// the largest normalised L2,1 error of a chart after error-controlled VSA
 /// (see `Vsa_result::chart_error`). Default: 0.25.
