@@ -303,30 +303,35 @@ BOOST_AUTO_TEST_CASE(simplicial_ldlt_solves_columns_as_eigen_does)
   }
 }
 
+// with the default solver, and with one that analyses every system ahead on a
+// second thread (which then runs on the bad mesh too)
 BOOST_AUTO_TEST_CASE_TEMPLATE(bad_input_writes_nothing, Mesh, Mesh_types)
 {
-  {
-    Soup s;  // a closed octahedron
-    s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    s.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-    const Mesh tm = make<Mesh>(s);
-    Uv_store<Mesh> uv;
-    const auto r = QD::flatten_patch(tm, uv.pmap());
-    BOOST_TEST((r.status == QD::Error_code::NO_BORDER));
-    BOOST_TEST(uv.map.empty());
-  }
-  {
-    Mesh empty;
-    Uv_store<Mesh> uv;
-    BOOST_TEST((QD::flatten_patch(empty, uv.pmap()).status == QD::Error_code::EMPTY_MESH));
-  }
-  {
-    Soup s = grid(4, 4, bump(0.2));
-    s.points[7][2] = std::numeric_limits<double>::quiet_NaN();
-    const Mesh tm = make<Mesh>(s);
-    Uv_store<Mesh> uv;
-    BOOST_TEST((QD::flatten_patch(tm, uv.pmap()).status == QD::Error_code::INVALID_COORDINATES));
-    BOOST_TEST(uv.map.empty());
+  for(std::size_t threshold : {QD::Size_adaptive_solver::default_supernodal_threshold, std::size_t(1)}) {
+    const auto np = QD::parameters::sparse_solver(QD::Size_adaptive_solver(threshold));
+    {
+      Soup s;  // a closed octahedron
+      s.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+      s.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+      const Mesh tm = make<Mesh>(s);
+      Uv_store<Mesh> uv;
+      const auto r = QD::flatten_patch(tm, uv.pmap(), np);
+      BOOST_TEST((r.status == QD::Error_code::NO_BORDER));
+      BOOST_TEST(uv.map.empty());
+    }
+    {
+      Mesh empty;
+      Uv_store<Mesh> uv;
+      BOOST_TEST((QD::flatten_patch(empty, uv.pmap(), np).status == QD::Error_code::EMPTY_MESH));
+    }
+    {
+      Soup s = grid(4, 4, bump(0.2));
+      s.points[7][2] = std::numeric_limits<double>::quiet_NaN();
+      const Mesh tm = make<Mesh>(s);
+      Uv_store<Mesh> uv;
+      BOOST_TEST((QD::flatten_patch(tm, uv.pmap(), np).status == QD::Error_code::INVALID_COORDINATES));
+      BOOST_TEST(uv.map.empty());
+    }
   }
 }
 
