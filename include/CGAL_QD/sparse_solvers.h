@@ -163,9 +163,7 @@ struct Cholmod_solver
 {
   Cholmod_solver() : Eigen_symmetric_solver("CHOLMOD") {}
 };
-#endif
 
-#ifdef CGAL_QD_USE_CHOLMOD
 /// \ingroup PkgCGAL_QDRef
 /// SuiteSparse's supernodal Cholesky factorisation with the AMD ordering alone
 /// (CHOLMOD's default would also weigh other orderings), available when CMake
