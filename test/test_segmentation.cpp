@@ -1948,3 +1948,99 @@ BOOST_AUTO_TEST_CASE(seam_smoothing_makes_the_try_kept_again_after_later_tries)
 
 BOOST_AUTO_TEST_SUITE_END()
 } // namespace seam_measures_tests
+
+// ===================================================================== a trial's mesh in one pass
+// internal/add_triangles.h builds the chart of a trial in one pass: it must
+// give the mesh that add_face() gives face after face (the same edges, faces,
+// next halfedges and border), and refuse what is not a manifold oriented
+// surface, which the evaluator then hands to add_face().
+
+#include <CGAL_QD/internal/add_triangles.h>
+#include <CGAL/boost/graph/helpers.h>
+
+namespace {
+
+// the mesh's vertices alone
+Surface_mesh vertices_of(const std::vector<Epick::Point_3>& points)
+{
+  Surface_mesh out;
+  for(const Epick::Point_3& p : points) out.add_vertex(p);
+  return out;
+}
+
+void expect_same_as_add_face(const std::vector<Epick::Point_3>& points, const std::vector<std::size_t>& corners,
+                             const std::string& name)
+{
+  typedef Surface_mesh::Vertex_index V;
+  Surface_mesh fast = vertices_of(points), slow = vertices_of(points);
+  BOOST_REQUIRE_MESSAGE(QD::internal::add_triangles(fast, corners), name);
+  for(std::size_t i = 0; i + 2 < corners.size(); i += 3)
+    BOOST_REQUIRE(slow.add_face(V(Surface_mesh::size_type(corners[i])), V(Surface_mesh::size_type(corners[i + 1])),
+                                V(Surface_mesh::size_type(corners[i + 2]))) != Surface_mesh::null_face());
+  // (a vertex of no face makes both invalid: the grid with holes has one)
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(fast) == CGAL::is_valid_polygon_mesh(slow), name);
+  BOOST_TEST(fast.number_of_halfedges() == slow.number_of_halfedges(), name);
+  BOOST_TEST(fast.number_of_faces() == slow.number_of_faces(), name);
+  std::size_t differ = 0;
+  for(auto h : slow.halfedges())
+    if(fast.target(h) != slow.target(h) || fast.face(h) != slow.face(h) || fast.next(h) != slow.next(h)) ++differ;
+  for(auto f : slow.faces())
+    if(fast.halfedge(f) != slow.halfedge(f)) ++differ;
+  for(auto v : slow.vertices()) {
+    // an incoming halfedge; on the border, the one border halfedge that comes in
+    if(slow.halfedge(v) == Surface_mesh::null_halfedge()) {  // no face
+      if(fast.halfedge(v) != Surface_mesh::null_halfedge()) ++differ;
+      continue;
+    }
+    const bool border = bool(is_border(v, slow));
+    if(fast.target(fast.halfedge(v)) != v || is_border(fast.halfedge(v), fast) != border) ++differ;
+    if(border && fast.halfedge(v) != slow.halfedge(v)) ++differ;
+  }
+  BOOST_TEST(differ == 0u, name << ": " << differ << " differences");
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(add_triangles_builds_what_add_face_builds)
+{
+  using namespace qd_test;
+  const std::vector<std::pair<std::string, Soup>> soups = {
+      {"disk", polar(6, 24, sphere_cap(0.8))},
+      {"grid with two holes", grid(12, 9, bump(0.2), holes({{{2, 4, 2, 4}}, {{7, 10, 3, 6}}}))},
+      {"open torus", torus(16, 8, true)},
+      {"closed torus", torus(16, 8)}};
+  for(const auto& s : soups) {
+    std::vector<Epick::Point_3> points;
+    for(const auto& p : s.second.points) points.emplace_back(p[0], p[1], p[2]);
+    std::vector<std::size_t> corners;
+    for(const auto& t : s.second.triangles) corners.insert(corners.end(), t.begin(), t.end());
+    expect_same_as_add_face(points, corners, s.first);
+  }
+#ifdef CGAL_QD_DEMO_MESH_DIR
+  Surface_mesh fandisk;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/fandisk.off", fandisk));
+  std::vector<Epick::Point_3> points;
+  for(auto v : fandisk.vertices()) points.push_back(fandisk.point(v));
+  std::vector<std::size_t> corners;
+  for(auto f : fandisk.faces())
+    for(auto v : CGAL::vertices_around_face(fandisk.halfedge(f), fandisk)) corners.push_back(v.idx());
+  expect_same_as_add_face(points, corners, "fandisk");
+#endif
+}
+
+BOOST_AUTO_TEST_CASE(add_triangles_refuses_what_is_not_a_manifold_surface)
+{
+  std::vector<Epick::Point_3> points;
+  for(int i = 0; i < 6; ++i) points.emplace_back(std::cos(i), std::sin(i), 0.1 * i);
+  const std::vector<std::pair<std::string, std::vector<std::size_t>>> cases = {
+      {"an edge used twice in one direction", {0, 1, 2, 0, 1, 3}},
+      {"an edge of three faces", {0, 1, 2, 1, 0, 3, 0, 1, 4}},
+      {"two fans at a vertex (bow tie)", {0, 1, 2, 0, 3, 4}},
+      {"a closed fan and an open one at a vertex", {0, 1, 2, 0, 2, 3, 0, 3, 1, 0, 4, 5}},
+      {"a repeated vertex", {0, 0, 1}},
+      {"a vertex index out of range", {0, 1, 6}}};
+  for(const auto& c : cases) {
+    Surface_mesh sm = vertices_of(points);
+    BOOST_TEST(!QD::internal::add_triangles(sm, c.second), c.first);
+  }
+}

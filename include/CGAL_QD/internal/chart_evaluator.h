@@ -15,6 +15,7 @@
 #include <CGAL_QD/flatten_patch.h>
 #include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/parameters.h>
+#include <CGAL_QD/internal/add_triangles.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/flattening_cache.h>
 #include <CGAL_QD/internal/hopeless_trial.h>
@@ -158,15 +159,25 @@ private:
       const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
       sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
     }
-    for(std::size_t i = 0; i < n_faces; ++i) {
-      typedef typename Mesh::Vertex_index V;
-      const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
-                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
-                                 V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 2])));
-      if(f == Mesh::null_face()) {
-        rep.status = Error_code::NON_MANIFOLD;
-        return rep;
+    if(!add_triangles(sm, wedges.wedge_of_corner)) {
+      // not a manifold surface: `add_face()` tells
+      sm.clear_without_removing_property_maps();
+      for(std::size_t w = 0; w < wedges.size(); ++w) {
+        const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
+        sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
       }
+      for(std::size_t i = 0; i < n_faces; ++i) {
+        typedef typename Mesh::Vertex_index V;
+        const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
+                                   V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
+                                   V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 2])));
+        if(f == Mesh::null_face()) {
+          rep.status = Error_code::NON_MANIFOLD;
+          return rep;
+        }
+      }
+    }
+    for(std::size_t i = 0; i < n_faces; ++i) {
       rep.area += double_area3(m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i]])],
                                m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 1]])],
                                m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 2]])]) / 2;
