@@ -155,17 +155,17 @@ private:
     sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
                static_cast<typename Mesh::size_type>(3 * n_faces),
                static_cast<typename Mesh::size_type>(n_faces));
-    for(std::size_t w = 0; w < wedges.size(); ++w) {
-      const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
-      sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
-    }
-    if(!add_triangles(sm, wedges.wedge_of_corner)) {
-      // not a manifold surface: `add_face()` tells
-      sm.clear_without_removing_property_maps();
+    auto add_vertices = [&] {
       for(std::size_t w = 0; w < wedges.size(); ++w) {
         const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
         sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
       }
+    };
+    add_vertices();
+    if(!add_triangles(sm, wedges.wedge_of_corner)) {
+      // not a manifold surface: `add_face()` tells
+      sm.clear_without_removing_property_maps();
+      add_vertices();
       for(std::size_t i = 0; i < n_faces; ++i) {
         typedef typename Mesh::Vertex_index V;
         const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
