@@ -237,33 +237,47 @@ int main(int argc, char** argv)
                                       QP::merge_order(segment_mesh::merge_order(o),
                                                       QP::compactness_ratio(
                                                           o.compactness_ratio,
-                                                          CGAL::parameters::verbose(o.verbose).callback(
-                                                              std::function<void(const char*, double)>(progress))))))))))))));
+                                                          QP::final_flattening(
+                                                              !o.smooth_seams,
+                                                              CGAL::parameters::verbose(o.verbose).callback(
+                                                                  std::function<void(const char*, double)>(
+                                                                      progress)))))))))))))));
   CGAL_QD::Segmentation_result<Mesh> r =
       o.sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                    : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
   // smooth seams through the triangles, on a copy of the mesh kept only if
   // every chart still flattens within the thresholds and every seam that
-  // matched in length still does (CGAL_QD::smooth_segmentation_seams())
+  // matched in length still does (CGAL_QD::smooth_segmentation_seams()); the
+  // segmentation comes without its flattening, which the smoothing makes
+  // only where it needs it (and for a single chart)
   segment_mesh::Smoothing<Mesh> smoothing;
   Mesh smoothed;
-  if(r && o.smooth_seams && r.number_of_charts > 1) {
-    smoothing.requested = true;
+  if(r && o.smooth_seams) {
+    smoothing.requested = r.number_of_charts > 1;
     smoothing.input_faces = r.number_of_faces;
     auto smoothed_chart = smoothed.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
-    const auto snp = QP::area_preservation(o.area_preservation, QP::max_local_area_distortion(
-        o.max_local_area_distortion,
-        QP::chart_criterion(segment_mesh::criterion(o),
-                            QP::max_area_distortion(o.max_area_distortion, QP::max_l2_stretch(o.max_stretch)))));
+    const auto snp = QP::area_preservation(
+        o.area_preservation,
+        QP::arap_border(segment_mesh::arap_border(o),
+                        QP::max_local_area_distortion(
+                            o.max_local_area_distortion,
+                            QP::chart_criterion(segment_mesh::criterion(o),
+                                                QP::max_area_distortion(o.max_area_distortion,
+                                                                        QP::max_l2_stretch(o.max_stretch))))));
     CGAL_QD::Seam_smoothing_result<Mesh>& s = smoothing.result;
     s = o.sequential
             ? CGAL_QD::smooth_segmentation_seams<CGAL::Sequential_tag>(mesh, chart, r, smoothed, smoothed_chart, snp)
             : CGAL_QD::smooth_segmentation_seams<CGAL::Parallel_if_available_tag>(mesh, chart, r, smoothed,
                                                                                   smoothed_chart, snp);
+    const double total = r.time_total_ms + s.time_ms;
     if(s.kept) {
-      const double total = r.time_total_ms + s.time_ms;
       static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(s.flattening);
       r.time_total_ms = total;
+    } else if(s.input_flattening.flattened) {
+      static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(s.input_flattening);
+      r.time_total_ms = total;
+    } else if(!r.flattened) {
+      r.status = s.status;  // the charts could not be flattened
     }
   }
   const Mesh& out_mesh = smoothing.result.kept ? smoothed : mesh;

@@ -1943,6 +1943,79 @@ BOOST_AUTO_TEST_CASE(seam_smoothing_makes_the_try_kept_again_after_later_tries)
   BOOST_TEST(again.number_of_seam_curves == f.number_of_seam_curves);
   BOOST_TEST(again.seam_length == f.seam_length, tt::tolerance(1e-9));
   BOOST_TEST(again.seam_zigzag == f.seam_zigzag, tt::tolerance(1e-9));
+
+  // The same segmentation without its flattening: the same charts and seams;
+  // the smoothing flattens the charts as they are where it needs them (on
+  // mannequin-devil a try with every chart accepted leaves seams unmatched,
+  // which are compared with the input's) and keeps the same try, bit for bit.
+  Face_map<Surface_mesh> lazy_chart;
+  const QD::Segmentation_result<Surface_mesh> lazy = QD::segment_quasi_developable(
+      tm, boost::make_assoc_property_map(lazy_chart), QD::parameters::final_flattening(false));
+  BOOST_REQUIRE(lazy);
+  BOOST_TEST(!lazy.flattened);
+  BOOST_TEST(seg.flattened);
+  BOOST_TEST((lazy_chart == chart));
+  BOOST_TEST(lazy.number_of_charts == seg.number_of_charts);
+  BOOST_TEST((lazy.seam_edges == seg.seam_edges));
+  BOOST_TEST(lazy.seam_length == seg.seam_length);
+  BOOST_TEST(lazy.charts.empty());
+  BOOST_TEST(lazy.corner_uv.empty());
+  Surface_mesh lazy_out;
+  Face_map<Surface_mesh> lazy_out_chart;
+  const QD::Seam_smoothing_result<Surface_mesh> ls = QD::smooth_segmentation_seams(
+      tm, boost::make_assoc_property_map(lazy_chart), lazy, lazy_out, boost::make_assoc_property_map(lazy_out_chart));
+  BOOST_REQUIRE(ls);
+  BOOST_REQUIRE(ls.kept);
+  BOOST_TEST(ls.tries == s.tries);
+  BOOST_TEST(num_faces(lazy_out) == num_faces(out));
+  BOOST_TEST((ls.flattening.corner_uv == f.corner_uv));
+  BOOST_TEST(ls.flattening.seam_curves_matched == f.seam_curves_matched);
+  BOOST_TEST(ls.flattening.seam_zigzag == f.seam_zigzag);
+  // made because a try left seams unmatched, and then the input's flattening
+  BOOST_REQUIRE(ls.input_flattening.flattened);
+  BOOST_TEST(!s.input_flattening.flattened);  // not made from a flattened segmentation
+  BOOST_TEST((ls.input_flattening.corner_uv == seg.corner_uv));
+  BOOST_TEST((ls.input_flattening.unmatched_seams == seg.unmatched_seams));
+  BOOST_TEST(ls.input_flattening.max_seam_length_mismatch == seg.max_seam_length_mismatch);
+  BOOST_TEST(ls.input_flattening.rejected_charts == seg.rejected_charts);
+}
+
+// A segmentation without its flattening that the smoothing cannot improve
+// (a single chart, no seam): the smoothing returns the flattening that the
+// segmentation would have made, and keeps nothing.
+BOOST_AUTO_TEST_CASE(seam_smoothing_flattens_an_unflattened_segmentation_it_does_not_smooth)
+{
+  Surface_mesh tm;
+  BOOST_REQUIRE(qd_test::build(qd_test::polar(12, 48, qd_test::flat_disk(1.)), tm));
+  Face_map<Surface_mesh> chart, lazy_chart;
+  const QD::Segmentation_result<Surface_mesh> seg =
+      QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  const QD::Segmentation_result<Surface_mesh> lazy = QD::segment_quasi_developable(
+      tm, boost::make_assoc_property_map(lazy_chart), QD::parameters::final_flattening(false));
+  BOOST_REQUIRE(seg);
+  BOOST_REQUIRE(lazy);
+  BOOST_REQUIRE(seg.number_of_charts == 1u);
+  BOOST_TEST(!lazy.flattened);
+  Surface_mesh out;
+  Face_map<Surface_mesh> out_chart;
+  const QD::Seam_smoothing_result<Surface_mesh> s = QD::smooth_segmentation_seams(
+      tm, boost::make_assoc_property_map(lazy_chart), lazy, out, boost::make_assoc_property_map(out_chart));
+  BOOST_REQUIRE(s);
+  BOOST_TEST(!s.kept);
+  BOOST_TEST(num_faces(out) == 0u);
+  BOOST_REQUIRE(s.input_flattening.flattened);
+  BOOST_TEST(s.input_flattening.number_of_charts == 1u);
+  BOOST_TEST((s.input_flattening.corner_uv == seg.corner_uv));
+  BOOST_TEST(s.input_flattening.max_local_area_distortion == seg.max_local_area_distortion);
+  BOOST_TEST(s.input_flattening.rejected_charts == 0u);
+  // chart ids that are not those of the segmentation: refused
+  Face_map<Surface_mesh> wrong = lazy_chart;
+  wrong.begin()->second = 7;
+  Surface_mesh out2;
+  BOOST_TEST(QD::smooth_segmentation_seams(tm, boost::make_assoc_property_map(wrong), lazy, out2,
+                                           boost::make_assoc_property_map(out_chart))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(num_faces(out2) == 0u);
 }
 #endif
 

@@ -90,6 +90,11 @@ struct Chart_flattening_result
 
   double time_flatten_ms = 0;
 
+  /// whether the charts were flattened: `false` in the result of `segment_quasi_developable()` with
+  /// `CGAL_QD::parameters::final_flattening(false)`, which then holds `number_of_faces`,
+  /// `number_of_charts`, `seam_edges`, `seam_length` and `points`, and leaves the rest empty
+  bool flattened = true;
+
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
@@ -103,6 +108,21 @@ inline constexpr double matched_seam_tolerance = 0.005;
 // many curves as more, and a weight of 30 more than 3, 10 or 100
 inline constexpr std::size_t seam_pull_rounds = 6;
 inline constexpr double seam_pull_weight = 30.;
+
+// the 3D length of the edges `seams`, with the points `points` by vertex index
+template <class TriangleMesh, class VIM>
+double seam_length_of(const TriangleMesh& tm,
+                      const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
+                      const std::vector<std::array<double, 3>>& points, const VIM& vim)
+{
+  double length = 0;
+  for(const auto& e : seams) {
+    const auto h = halfedge(e, tm);
+    const std::array<double, 3>&p = points[get(vim, source(h, tm))], &q = points[get(vim, target(h, tm))];
+    length += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  return length;
+}
 
 // Flattens the charts `chart` (compact ids by face index, n charts) cut open
 // along `seams`, and fills the chart and seam fields of `result` (whose
@@ -130,14 +150,11 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   result.seam_edges = seams;
   std::vector<char> is_seam(num_halfedges(tm), 0);
   std::vector<halfedge_descriptor> seam_halfedges;
-  result.seam_length = 0;
+  result.seam_length = seam_length_of(tm, seams, result.points, vim);
   for(edge_descriptor e : seams) {
     const halfedge_descriptor h = halfedge(e, tm);
     is_seam[get(him, h)] = is_seam[get(him, opposite(h, tm))] = 1;
     seam_halfedges.push_back(h);
-    const std::array<double, 3>&p = result.points[get(vim, source(h, tm))], &q = result.points[get(vim, target(h, tm))];
-    result.seam_length += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                                    (p[2] - q[2]) * (p[2] - q[2]));
   }
   const auto seam = [&](halfedge_descriptor h) { return is_seam[get(him, h)] != 0; };
   // the seam curves, each as its halfedges along one side

@@ -43,6 +43,7 @@ struct iteration_callback_t {};
 struct anderson_acceleration_t {};
 struct number_of_free_iterations_t {};
 struct compactness_ratio_t {};
+struct final_flattening_t {};
 
 } // namespace internal_np
 
@@ -98,6 +99,13 @@ CGAL_QD_ADD_NAMED_PARAMETER(denoised_point_map)
 /// whether `segment_quasi_developable()` runs the boundary-based merging
 /// (step 4). Default: `true`.
 CGAL_QD_ADD_NAMED_PARAMETER(merge_charts)
+/// whether `segment_quasi_developable()` flattens the final charts (step 5).
+/// Default: `true`. With `false` the result holds the charts and the seams but
+/// no flattening (`Chart_flattening_result::flattened` is `false`):
+/// `smooth_segmentation_seams()` takes such a result and flattens the charts
+/// as they are only where it needs them, which saves a flattening of the whole
+/// mesh when the smoothed seams are kept.
+CGAL_QD_ADD_NAMED_PARAMETER(final_flattening)
 /// the largest area distortion A(Omega) of an accepted chart, as a fraction
 /// (0.10 is 10 %). Default: 0.10, the paper's threshold.
 CGAL_QD_ADD_NAMED_PARAMETER(max_area_distortion)

@@ -233,10 +233,19 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
               << " from splitting) -> " << result.number_of_charts << ", " << result.merging.trials << " trials, "
               << result.merging.merges << " merges in " << result.time_merge_ms << " ms\n";
 
-  // 5. the flattening of every final chart
-  internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, result.number_of_charts,
-                                                 result.merging.seam_edges, thresholds, progress, result);
-  if(verbose)
+  // 5. the flattening of every final chart (always for a scaled mesh: a
+  // flattening of the charts made later would see the points in the units of
+  // the mesh)
+  if(choose_parameter(get_parameter(snp, internal_np::final_flattening_t()), true) || scale != 1.) {
+    internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, result.number_of_charts,
+                                                   result.merging.seam_edges, thresholds, progress, result);
+  } else {
+    result.flattened = false;
+    result.number_of_faces = nf;
+    result.seam_edges = result.merging.seam_edges;
+    result.seam_length = internal::seam_length_of(tm, result.seam_edges, result.points, vim);
+  }
+  if(verbose && result.flattened)
     std::cerr << "flattening: " << result.number_of_charts << " charts, max A " << result.max_area_distortion
               << " %, max L2 " << result.max_l2_stretch << ", " << result.overlapping_charts << " overlapping, in "
               << result.time_flatten_ms << " ms\n";

@@ -28,6 +28,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -54,6 +55,10 @@ struct Seam_smoothing_result
   std::size_t tries = 0;  ///< smoothings tried and flattened
   /// the flattening of the charts of the output mesh, when `kept`
   Chart_flattening_result<TriangleMesh> flattening;
+  /// for a `segmentation` given without its flattening (`segment_quasi_developable()` with
+  /// `CGAL_QD::parameters::final_flattening(false)`): the flattening of its charts as they are, made
+  /// where it was needed, and always when nothing was kept (`flattened` is `false` otherwise)
+  Chart_flattening_result<TriangleMesh> input_flattening;
   double time_ms = 0;  ///< every try: smoothing and flattening
 
   explicit operator bool() const { return status == Error_code::OK; }
@@ -83,6 +88,13 @@ struct Seam_smoothing_result
 /// 10 tries. The try kept is the one with every chart accepted and the most
 /// seams matched (as many: the smallest zigzag).
 ///
+/// `segmentation` may come without its flattening
+/// (`CGAL_QD::parameters::final_flattening(false)`): the charts as they are
+/// are then flattened only where that is needed, to compare the seams of a try
+/// whose charts are all accepted but not all of whose seams match, and when no
+/// try is kept; `input_flattening` returns it. With every seam of the first
+/// kept try matched, that saves a flattening of the whole mesh.
+///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag` (for the flattenings); the result is the same
 /// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` with an internal
@@ -95,7 +107,8 @@ struct Seam_smoothing_result
 /// \param face_chart the charts of the segmentation
 /// \param segmentation the flattening of those charts (`segment_quasi_developable()`'s result, or
 ///        `flatten_charts()`'s): its `seam_edges` (the borders and the cuts inside charts),
-///        `unmatched_seams` and `max_seam_length_mismatch` are used
+///        `unmatched_seams` and `max_seam_length_mismatch` are used; or
+///        `segment_quasi_developable()`'s result without its flattening (see above)
 /// \param out an empty mesh that receives the refined mesh when smoothed seams are kept
 /// \param out_chart receives the chart of every face of `out`
 /// \param np optional named parameters: the thresholds and criterion of the segmentation
@@ -128,7 +141,47 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
   result.status = internal::validate_mesh_to_segment(tm, get(CGAL::vertex_point, tm));
   if(result.status == Error_code::OK && !internal::thresholds_valid(thresholds)) result.status = Error_code::INVALID_ARGUMENT;
-  if(result.status != Error_code::OK || segmentation.number_of_charts < 2) return result;
+  if(result.status != Error_code::OK) return result;
+  result.input_flattening.flattened = false;
+  // the flattening of the charts as they are: `segmentation` itself, or made
+  // here as `segment_quasi_developable()` would have made it
+  auto input_flattening = [&]() -> const Chart_flattening_result<TriangleMesh>& {
+    if(segmentation.flattened) return segmentation;
+    if(!result.input_flattening.flattened) {
+      const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+      const auto fim = CGAL::get_initialized_face_index_map(tm);
+      const auto him = CGAL::get_initialized_halfedge_index_map(tm);
+      std::vector<std::size_t> chart(static_cast<std::size_t>(num_faces(tm)));
+      for(auto f : faces(tm)) {
+        chart[get(fim, f)] = static_cast<std::size_t>(get(face_chart, f));
+        if(chart[get(fim, f)] >= segmentation.number_of_charts) {  // charts not numbered as in `segmentation`
+          result.status = Error_code::INVALID_ARGUMENT;
+          return result.input_flattening;
+        }
+      }
+      Chart_flattening_result<TriangleMesh>& made = result.input_flattening;
+      made = Chart_flattening_result<TriangleMesh>();
+      made.points = segmentation.points.size() == static_cast<std::size_t>(num_vertices(tm))
+                        ? segmentation.points
+                        : internal::points_by_index(tm, get(CGAL::vertex_point, tm), vim);
+      internal::flatten_final_charts<ConcurrencyTag>(tm, get(CGAL::vertex_point, tm), fim, vim, him, chart,
+                                                     segmentation.number_of_charts, segmentation.seam_edges,
+                                                     thresholds, std::function<void(const char*, double)>(), made);
+    }
+    return result.input_flattening;
+  };
+  // the charts as they are when nothing was kept, whatever stopped the smoothing
+  const auto finish = [&]() {
+    if(!result.kept && !segmentation.flattened) {
+      const Error_code smoothing_status = result.status;
+      result.status = Error_code::OK;
+      input_flattening();
+      if(result.status == Error_code::OK) result.status = smoothing_status;
+    }
+    result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  };
+  if(segmentation.number_of_charts < 2) return finish();
 
   auto pair_of = [](std::size_t a, std::size_t b) { return Chart_pair((std::min)(a, b), (std::max)(a, b)); };
   const std::array<std::size_t, 3> strengths = {{32, 8, 2}};  // smoothing rounds; level 3: along the edges
@@ -167,9 +220,18 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     ++l;
     return true;
   };
-  // the seams of the input that did not match, with their worst mismatch
+  // the seams of the input that did not match, with their worst mismatch;
+  // from the input's flattening, where it is needed
   std::map<Chart_pair, double> unmatched_before;
-  for(const Chart_pair& p : segmentation.unmatched_seams) unmatched_before[p] = segmentation.max_seam_length_mismatch;
+  bool have_unmatched_before = false;
+  auto unmatched_before_smoothing = [&]() -> const std::map<Chart_pair, double>& {
+    if(!have_unmatched_before) {
+      const Chart_flattening_result<TriangleMesh>& input = input_flattening();
+      for(const Chart_pair& p : input.unmatched_seams) unmatched_before[p] = input.max_seam_length_mismatch;
+      have_unmatched_before = true;
+    }
+    return unmatched_before;
+  };
 
   // a seam along the edges already that stops matching: the curves of its
   // charts still smoothed go into `less`; where there is none, those of the
@@ -360,9 +422,10 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       if(!f.charts[k].accepted) less.insert(pairs_of[k].begin(), pairs_of[k].end());
     for(std::size_t i = 0; i < f.unmatched_seams.size() && f.rejected_charts == 0; ++i) {
       const Chart_pair& pair = f.unmatched_seams[i];
-      const auto before = unmatched_before.find(pair);
-      if(before != unmatched_before.end() &&
-         f.unmatched_seam_mismatch[i] <= (std::max)(before->second, segmentation.max_seam_length_mismatch))
+      const std::map<Chart_pair, double>& before_smoothing = unmatched_before_smoothing();
+      const auto before = before_smoothing.find(pair);
+      if(before != before_smoothing.end() &&
+         f.unmatched_seam_mismatch[i] <= (std::max)(before->second, input_flattening().max_seam_length_mismatch))
         continue;
       if(level[pair] < along_edges) {
         less.insert(pair);
@@ -392,8 +455,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     if(!best) best = smooth_at(best_level, nullptr).t;
     result.flattening = best->copy_into(out, out_chart, std::move(best_flattening));
   }
-  result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return result;
+  return finish();
 }
 
 } // namespace CGAL_QD
