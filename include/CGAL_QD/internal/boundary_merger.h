@@ -21,10 +21,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iostream>
+#include <memory>
+#include <mutex>
 #include <queue>
 #include <tuple>
 #include <utility>
@@ -231,17 +234,45 @@ public:
         }
       }
       const std::vector<std::size_t> largest_first = dearest_first(size);
+      // As the trials of the batch end, the first one in the order of `take`
+      // whose every predecessor is known to be rejected is known to be
+      // accepted: the trials after it that share one of its charts are then
+      // stale (the loop below takes it and pushes them back), and stop.
+      Batch_outcome outcome(take.size());
+      std::vector<std::size_t> position(to_evaluate.size());
+      for(std::size_t t = 0, k = 0; t < take.size(); ++t) {
+        if(k < to_evaluate.size() && to_evaluate[k] == take[t])
+          position[k++] = t;
+        else
+          outcome.known(t, cache[take[t]].report.accepted);
+      }
+      std::unique_ptr<std::atomic<bool>[]> stale(new std::atomic<bool>[to_evaluate.size()]);
+      for(std::size_t k = 0; k < to_evaluate.size(); ++k) stale[k] = false;
+      std::atomic<std::size_t> evaluated{0};
+      std::mutex mutex;
       for_each_index<ConcurrencyTag>(to_evaluate.size(), [&](std::size_t i) {
-        const std::size_t c = to_evaluate[largest_first[i]];
+        const std::size_t k = largest_first[i], c = to_evaluate[k];
+        if(stale[k]) return;
         Cached x;
         x.r1 = find(m_curves[c].a);
         x.r2 = find(m_curves[c].b);
         x.v1 = m_version[x.r1];
         x.v2 = m_version[x.r2];
-        x.report = trial(c);
+        x.report = trial(c, &stale[k]);
+        if(stale[k]) return;  // it may have given up: not kept
         cache[c] = x;
+        ++evaluated;
+        std::lock_guard<std::mutex> lock(mutex);
+        outcome.known(position[k], x.report.accepted);
+        const std::size_t first = outcome.first_accepted();
+        if(first == Batch_outcome::none) return;
+        const std::size_t a = find(m_curves[take[first]].a), b = find(m_curves[take[first]].b);
+        for(std::size_t j = 0; j < to_evaluate.size(); ++j) {
+          const std::size_t r1 = find(m_curves[to_evaluate[j]].a), r2 = find(m_curves[to_evaluate[j]].b);
+          if(position[j] > first && (r1 == a || r1 == b || r2 == a || r2 == b)) stale[j] = true;
+        }
       });
-      trials += to_evaluate.size();
+      trials += evaluated;
       for(std::size_t t = 0; t < take.size(); ++t) {
         const std::size_t c = take[t];
         const Chart_report& rep = cache[c].report;
@@ -352,7 +383,30 @@ private:
                                             compactness(m_area[r2], m_perimeter[r2]));
   }
 
-  Chart_report trial(std::size_t c) const
+  // What is known of the trials of a batch, in the order of the batch.
+  class Batch_outcome
+  {
+  public:
+    static constexpr std::size_t none = std::size_t(-1);
+    explicit Batch_outcome(std::size_t n) : m_state(n, unknown) {}
+    void known(std::size_t t, bool accepted) { m_state[t] = accepted ? yes : no; }
+    // the first trial accepted after trials all known to be rejected, or `none`
+    std::size_t first_accepted() const
+    {
+      for(std::size_t t = 0; t < m_state.size(); ++t) {
+        if(m_state[t] == unknown) return none;
+        if(m_state[t] == yes) return t;
+      }
+      return none;
+    }
+
+  private:
+    enum State : char { unknown, no, yes };
+    std::vector<State> m_state;
+  };
+
+  // the merging trial of curve `c`, which gives up once `stop` is set
+  Chart_report trial(std::size_t c, const std::atomic<bool>* stop = nullptr) const
   {
     std::vector<face_descriptor> fs;
     const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
@@ -361,10 +415,13 @@ private:
       if(r1 == r2) break;
     }
     std::sort(fs.begin(), fs.end(), [&](face_descriptor x, face_descriptor y) { return get(m_fim, x) < get(m_fim, y); });
-    return m_eval.evaluate(fs, [&](halfedge_descriptor h) {
-      const long d = m_curve_of[get(m_him, h)];
-      return d >= 0 && std::size_t(d) != c && !m_curves[d].eliminated;
-    });
+    return m_eval.evaluate(
+        fs,
+        [&](halfedge_descriptor h) {
+          const long d = m_curve_of[get(m_him, h)];
+          return d >= 0 && std::size_t(d) != c && !m_curves[d].eliminated;
+        },
+        nullptr, nullptr, nullptr, 1000., true, stop);
   }
 
   void accept(std::size_t c)

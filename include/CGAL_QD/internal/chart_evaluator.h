@@ -83,13 +83,15 @@ public:
   // length where the thresholds allow it (`exact`), or else pulled towards
   // it with `pull_weight` (`Arap_border::KEEP_LENGTHS`; with a small weight,
   // a step towards the targets that the chart takes as far as its rigidity
-  // lets it).
+  // lets it). `stop`, if given, is looked at between the steps of a trial
+  // (without `corner_uv`) and at every iteration of its optimisation: once it
+  // is set, the trial gives up, and its report, rejected, means nothing.
   template <class IsCut>
   Chart_report evaluate(const std::vector<face_descriptor>& faces, const IsCut& is_cut,
                         std::vector<std::array<double, 2>>* corner_uv = nullptr,
                         const std::vector<double>* border_target = nullptr,
                         const std::vector<std::array<double, 2>>* start_uv = nullptr, double pull_weight = 1000.,
-                        bool exact = true) const
+                        bool exact = true, const std::atomic<bool>* stop = nullptr) const
   {
     Wedges<TriangleMesh> wedges;
     {
@@ -100,7 +102,7 @@ public:
       compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
       for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
     }
-    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact);
+    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact, stop);
     // the chart cut open, the fit's targets and start, and the thresholds
     Digest digest;
     const std::uint64_t flags =
@@ -130,7 +132,8 @@ public:
       }
       return rep;
     }
-    rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact);
+    rep = flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact, stop);
+    if(stopped(stop)) return rep;
     if(corner_uv && corner_uv->size() == wedges.wedge_of_corner.size()) {
       wedge_uv.resize(wedges.size());
       for(std::size_t c = 0; c < wedges.wedge_of_corner.size(); ++c)
@@ -147,7 +150,8 @@ private:
   // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
   Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges,
                        std::vector<std::array<double, 2>>* corner_uv, const std::vector<double>* border_target,
-                       const std::vector<std::array<double, 2>>* start_uv, double pull_weight, bool exact) const
+                       const std::vector<std::array<double, 2>>* start_uv, double pull_weight, bool exact,
+                       const std::atomic<bool>* stop) const
   {
     Chart_report rep;
     rep.number_of_faces = n_faces;
@@ -254,6 +258,7 @@ private:
       }
       return pull(pull_weight);
     }
+    if(stopped(stop)) return rep;
     // SimplicialLDLT, not the default's supernodal factorisation for large
     // charts: the charts are flattened on the threads of the segmentation's
     // parallel loops, where BLAS threads and the analysis thread of the
@@ -302,7 +307,7 @@ private:
         // below it by iteration 30
         const Hopeless_trial<Mesh> hopeless(sm, m_thresholds.max_local_area_distortion, 30);
         o = optimize_flattening(sm, opt, parameters::iteration_callback([&](std::size_t iterations) {
-          return hopeless(opt, iterations);
+          return stopped(stop) || hopeless(opt, iterations);
         }, trial_parameters()));
         if(o.stopped_by_callback) return rep;  // rejected
       }
@@ -358,6 +363,8 @@ private:
     write_corner_uv();
     return rep;
   }
+
+  static bool stopped(const std::atomic<bool>* stop) { return stop && stop->load(std::memory_order_relaxed); }
 
   // a face-index buffer of the mesh's size, all -1, taken from the
   // evaluator's pool for one trial and given back (all -1 again) after it
