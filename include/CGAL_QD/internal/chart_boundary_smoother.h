@@ -13,6 +13,7 @@
 #include <CGAL_QD/internal/vec3.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/segmentation_measures.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -20,7 +21,6 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
-#include <boost/container_hash/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <algorithm>
 #include <array>
@@ -28,7 +28,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -65,7 +64,9 @@ public:
   Chart_boundary_smoother(TriangleMesh& tm, VPM vpm, FaceChartMap chart, ECM ecm, double sharp_angle_degrees,
                           std::size_t rings, std::size_t rounds)
       : m_tm(tm), m_vpm(vpm), m_chart(chart), m_ecm(ecm),
-        m_cos_sharp(std::cos(sharp_angle_degrees * 3.14159265358979323846 / 180.)), m_rings(rings), m_rounds(rounds)
+        m_cos_sharp(std::cos(sharp_angle_degrees * 3.14159265358979323846 / 180.)), m_rings(rings), m_rounds(rounds),
+        m_node_ids(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm)),
+        m_face_ids(get(CGAL::dynamic_face_property_t<std::size_t>(), tm))
   {}
 
   enum class Outcome { SMOOTHED, ALREADY_SMOOTH, KEPT_SHARP, FAILED };
@@ -165,11 +166,20 @@ private:
   typedef Band_node Node;
   typedef Labelled_triangle Tri;  // label 0: A, 1: B
 
+  // the node of a vertex met for this curve, and of a face of A or B
+  std::size_t node_id(vertex_descriptor v) const { return get(m_node_ids, v) - 1; }
+  bool has_face_id(face_descriptor f) const { return get(m_face_ids, f) != 0; }
+  std::size_t face_id(face_descriptor f) const { return get(m_face_ids, f) - 1; }
+  void set_node_id(vertex_descriptor v, std::size_t id)
+  {
+    put(m_node_ids, v, id + 1);
+    m_numbered.push_back(v);
+  }
+
   std::size_t node_of(vertex_descriptor v)
   {
-    auto it = m_node_id.find(v);
-    if(it != m_node_id.end()) return it->second;
-    m_node_id.emplace(v, m_cut.nodes.size());
+    if(get(m_node_ids, v) != 0) return node_id(v);
+    set_node_id(v, m_cut.nodes.size());
     Node n;
     n.p = point(v);
     m_cut.nodes.push_back(n);
@@ -179,11 +189,13 @@ private:
 
   void build_charts()
   {
+    // the ids of the curve before, reset (0: none; else the id + 1)
+    for(vertex_descriptor v : m_numbered) put(m_node_ids, v, 0);
+    for(face_descriptor f : m_faces) put(m_face_ids, f, 0);
+    m_numbered.clear();
     m_cut.nodes.clear();
     m_vertex.clear();
-    m_node_id.clear();
     m_faces.clear();
-    m_face_id.clear();
     m_cut.tris.clear();
     // every face of A and B, by breadth-first search from the curve
     for(int s = 0; s < 2; ++s) {
@@ -191,13 +203,15 @@ private:
       const face_descriptor start =
           s == 0 ? face(m_curve_halfedges[0], m_tm) : face(opposite(m_curve_halfedges[0], m_tm), m_tm);
       const std::size_t first = m_faces.size();
+      if(has_face_id(start)) continue;  // A and B are one chart: cannot happen, as m_a != m_b
       m_faces.push_back(start);
-      m_face_id.emplace(start, first);
+      put(m_face_ids, start, first + 1);
       for(std::size_t q = first; q < m_faces.size(); ++q)
         for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(m_faces[q], m_tm), m_tm)) {
           const halfedge_descriptor o = opposite(h, m_tm);
-          if(is_border(o, m_tm) || get(m_chart, face(o, m_tm)) != label) continue;
-          if(m_face_id.emplace(face(o, m_tm), m_faces.size()).second) m_faces.push_back(face(o, m_tm));
+          if(is_border(o, m_tm) || get(m_chart, face(o, m_tm)) != label || has_face_id(face(o, m_tm))) continue;
+          put(m_face_ids, face(o, m_tm), m_faces.size() + 1);
+          m_faces.push_back(face(o, m_tm));
         }
     }
     m_cut.tris.resize(m_faces.size());
@@ -213,7 +227,7 @@ private:
     std::vector<std::size_t> ring;
     std::vector<char> reached(m_cut.nodes.size(), 0);
     for(vertex_descriptor v : m_curve) {
-      ring.push_back(m_node_id.at(v));
+      ring.push_back(node_id(v));
       reached[ring.back()] = 1;
     }
     for(std::size_t r = 0; r < m_rings; ++r) {
@@ -221,10 +235,11 @@ private:
       for(std::size_t k : ring)
         for(halfedge_descriptor h : CGAL::halfedges_around_target(m_vertex[k], m_tm)) {
           if(is_border(h, m_tm)) continue;
-          const auto it = m_face_id.find(face(h, m_tm));
-          if(it == m_face_id.end() || m_cut.in_band[it->second]) continue;
-          m_cut.in_band[it->second] = 1;
-          for(std::size_t x : m_cut.tris[it->second].n)
+          if(!has_face_id(face(h, m_tm))) continue;
+          const std::size_t t = face_id(face(h, m_tm));
+          if(m_cut.in_band[t]) continue;
+          m_cut.in_band[t] = 1;
+          for(std::size_t x : m_cut.tris[t].n)
             if(!reached[x]) {
               reached[x] = 1;
               next_ring.push_back(x);
@@ -247,16 +262,16 @@ private:
           continue;
         }
         if(is_border(opposite(h, m_tm), m_tm)) n.locked = true;
-        const auto it = m_face_id.find(face(h, m_tm));
-        if(it == m_face_id.end() || !m_cut.in_band[it->second]) n.locked = true;
-        if(it != m_face_id.end()) (m_cut.tris[it->second].label == 0 ? a : b) = true;
+        const bool in_ab = has_face_id(face(h, m_tm));
+        if(!in_ab || !m_cut.in_band[face_id(face(h, m_tm))]) n.locked = true;
+        if(in_ab) (m_cut.tris[face_id(face(h, m_tm))].label == 0 ? a : b) = true;
       }
       n.side = a && b ? 0 : (a ? 1 : -1);
       // on this curve: fixed where the curve is; elsewhere on A and B's border: fixed
       n.fixed = n.curve_index >= 0 ? bool(m_fixed[std::size_t(n.curve_index)]) : n.side == 0;
     }
     for(std::size_t i = 0; i < m_curve.size(); ++i) {
-      Node& n = m_cut.nodes[m_node_id.at(m_curve[i])];
+      Node& n = m_cut.nodes[node_id(m_curve[i])];
       if(n.locked) n.fixed = true;  // a curve vertex next to a cut or the border stays
     }
   }
@@ -266,14 +281,14 @@ private:
   {
     const std::size_t nv = m_curve.size(), ne = m_closed ? nv : nv - 1;
     std::vector<char> fixed(nv, 0);
-    for(std::size_t i = 0; i < nv; ++i) fixed[i] = m_cut.nodes[m_node_id.at(m_curve[i])].fixed;
+    for(std::size_t i = 0; i < nv; ++i) fixed[i] = m_cut.nodes[node_id(m_curve[i])].fixed;
     m_target = m_original;
     smooth_polyline(m_target, m_closed, rounds, fixed);
     // vertex normals of the curve, from the faces of A and B
     std::vector<P> normals(nv, P{0., 0., 0.});
     for(std::size_t i = 0; i < nv; ++i) {
       for(halfedge_descriptor h : CGAL::halfedges_around_target(m_curve[i], m_tm)) {
-        if(is_border(h, m_tm) || !m_face_id.count(face(h, m_tm))) continue;
+        if(is_border(h, m_tm) || !has_face_id(face(h, m_tm))) continue;
         const halfedge_descriptor g = halfedge(face(h, m_tm), m_tm);
         const P a = point(source(g, m_tm)), b = point(target(g, m_tm)), c = point(target(next(g, m_tm), m_tm));
         const P n = vec3::cross(vec3::sub(b, a), vec3::sub(c, a));
@@ -353,7 +368,7 @@ private:
        }))
       return false;
     std::vector<std::size_t> ends;
-    if(!m_closed) ends = {m_node_id.at(m_curve.front()), m_node_id.at(m_curve.back())};
+    if(!m_closed) ends = {node_id(m_curve.front()), node_id(m_curve.back())};
     return m_cut.verify(m_before, ends);
   }
 
@@ -382,7 +397,7 @@ private:
         put(m_ecm, edge(h, m_tm), true);
       }
       vertex_of[m_cut.nodes.size() + k] = w;
-      m_node_id.emplace(w, m_cut.nodes.size() + k);
+      set_node_id(w, m_cut.nodes.size() + k);
       ++vertices_added;
     }
     for(const Band_cut::Face_plan& fp : m_cut.plans) {
@@ -408,7 +423,7 @@ private:
         int k = 0;
         for(halfedge_descriptor e : CGAL::halfedges_around_face(h, m_tm)) {
           const vertex_descriptor v = target(e, m_tm);
-          t[std::size_t(k++ % 3)] = m_node_id.at(v);
+          t[std::size_t(k++ % 3)] = node_id(v);
         }
         put(m_chart, g, m_cut.label_of(t, m_cut.tris[fp.face].label) == 0 ? m_a : m_b);
       }
@@ -438,9 +453,14 @@ private:
 
   Band_cut m_cut;                       // the copy of A and B, and the cut planned on it
   std::vector<vertex_descriptor> m_vertex;  // of every node of `m_cut`
-  std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor>> m_node_id;
-  std::vector<face_descriptor> m_faces;  // of every triangle of `m_cut`
-  std::unordered_map<face_descriptor, std::size_t, boost::hash<face_descriptor>> m_face_id;
+  std::vector<face_descriptor> m_faces;     // of every triangle of `m_cut`
+  // the node of every vertex and the triangle of every face of `m_cut`, plus
+  // one (0: none), in property maps of the mesh (arrays for a Surface_mesh),
+  // reset from `m_numbered` and `m_faces` for the next curve: the ids of two
+  // whole charts are written for every curve
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t>>::type m_node_ids;
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t>>::type m_face_ids;
+  std::vector<vertex_descriptor> m_numbered;  // the vertices with a node id
   std::array<Labelled_topology, 2> m_before;  // of A and B, before the change
 };
 
