@@ -220,19 +220,6 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     ++l;
     return true;
   };
-  // the seams of the input that did not match, with their worst mismatch;
-  // from the input's flattening, where it is needed
-  std::map<Chart_pair, double> unmatched_before;
-  bool have_unmatched_before = false;
-  auto unmatched_before_smoothing = [&]() -> const std::map<Chart_pair, double>& {
-    if(!have_unmatched_before) {
-      const Chart_flattening_result<TriangleMesh>& input = input_flattening();
-      for(const Chart_pair& p : input.unmatched_seams) unmatched_before[p] = input.max_seam_length_mismatch;
-      have_unmatched_before = true;
-    }
-    return unmatched_before;
-  };
-
   // a seam along the edges already that stops matching: the curves of its
   // charts still smoothed go into `less`; where there is none, those of the
   // charts next to them, ring by ring
@@ -421,11 +408,12 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     for(std::size_t k = 0; k < f.charts.size(); ++k)
       if(!f.charts[k].accepted) less.insert(pairs_of[k].begin(), pairs_of[k].end());
     for(std::size_t i = 0; i < f.unmatched_seams.size() && f.rejected_charts == 0; ++i) {
+      // a seam of the input that did not match either, and ends no further
+      // apart than the input's worst seam
       const Chart_pair& pair = f.unmatched_seams[i];
-      const std::map<Chart_pair, double>& before_smoothing = unmatched_before_smoothing();
-      const auto before = before_smoothing.find(pair);
-      if(before != before_smoothing.end() &&
-         f.unmatched_seam_mismatch[i] <= (std::max)(before->second, input_flattening().max_seam_length_mismatch))
+      const Chart_flattening_result<TriangleMesh>& input = input_flattening();
+      if(std::find(input.unmatched_seams.begin(), input.unmatched_seams.end(), pair) != input.unmatched_seams.end() &&
+         f.unmatched_seam_mismatch[i] <= input.max_seam_length_mismatch)
         continue;
       if(level[pair] < along_edges) {
         less.insert(pair);

@@ -203,7 +203,6 @@ private:
       const face_descriptor start =
           s == 0 ? face(m_curve_halfedges[0], m_tm) : face(opposite(m_curve_halfedges[0], m_tm), m_tm);
       const std::size_t first = m_faces.size();
-      if(has_face_id(start)) continue;  // A and B are one chart: cannot happen, as m_a != m_b
       m_faces.push_back(start);
       put(m_face_ids, start, first + 1);
       for(std::size_t q = first; q < m_faces.size(); ++q)
