@@ -1086,6 +1086,51 @@ BOOST_AUTO_TEST_CASE(parallel_normal_smoothing_is_the_sequential_one)
   }
 }
 
+BOOST_AUTO_TEST_CASE(face_by_face_normal_smoothing_is_the_flood_in_the_mesh_numbering)
+{
+  // the face by face discs are flooded on the faces renumbered along a Morton
+  // curve: every normal must be the one of a flood in the mesh's own
+  // numbering (the same faces summed in the same order), to the last bit
+  for(const char* name : {"elephant", "fandisk"}) {
+    const Series_mesh tm = read_demo_mesh(name);
+    const auto fim = get(CGAL::face_index, tm);
+    const std::vector<QD::internal::Face_geometry> geo =
+        QD::internal::face_geometry(tm, get(CGAL::vertex_point, tm), fim);
+    const double radius = 2 * step1_smoothing_radius(geo);  // about 100 faces a disc on elephant
+    const auto smoothed = QD::internal::smooth_face_normals<CGAL::Parallel_tag>(
+        tm, fim, geo, radius, QD::internal::vsa_crease_cos, std::numeric_limits<double>::infinity());
+    const std::size_t none = std::size_t(-1);
+    const auto next_to = QD::internal::smooth_neighbours(tm, fim, geo, QD::internal::vsa_crease_cos);
+    std::vector<std::size_t> stamp(geo.size(), none), queue;
+    std::size_t same = 0, changed = 0;
+    for(std::size_t s = 0; s < geo.size(); ++s) {
+      std::array<double, 3> sum = {0., 0., 0.};
+      stamp[s] = s;
+      queue.assign(1, s);
+      for(std::size_t q = 0; q < queue.size(); ++q) {
+        const std::size_t i = queue[q];
+        for(int k = 0; k < 3; ++k) sum[k] += geo[i].area * geo[i].normal[k];
+        for(std::size_t g : next_to[i]) {
+          if(g == none || stamp[g] == s || QD::internal::squared_distance3(geo[s].centroid, geo[g].centroid) >
+                                               radius * radius)
+            continue;
+          stamp[g] = s;
+          queue.push_back(g);
+        }
+      }
+      std::array<double, 3> expected = geo[s].normal;
+      const double l = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+      if(queue.size() > 1 && l > 0)
+        for(int k = 0; k < 3; ++k) expected[k] = sum[k] / l;
+      if(smoothed[s].normal == expected) ++same;
+      if(expected != geo[s].normal) ++changed;
+    }
+    BOOST_TEST_MESSAGE(name << ": " << changed << " of " << geo.size() << " normals smoothed");
+    BOOST_TEST(changed > geo.size() / 2);
+    BOOST_TEST(same == geo.size());
+  }
+}
+
 BOOST_AUTO_TEST_CASE(parallel_loops_run_every_task_once_dearest_first)
 {
   // the segmentation's tasks go out from the dearest to the cheapest (ties in index order)

@@ -16,6 +16,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL_QD {
@@ -51,6 +53,47 @@ inline double squared_distance3(const std::array<double, 3>& a, const std::array
 {
   const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
   return x * x + y * y + z * z;
+}
+
+// The indices 0 to n - 1 in the order of a Morton curve through the points
+// `point(i)` (ties in index order): points close together come close
+// together in the order.
+template <class Point>
+std::vector<std::size_t> morton_order(std::size_t n, const Point& point)
+{
+  std::array<double, 3> lo = {0., 0., 0.}, hi = {0., 0., 0.};
+  for(std::size_t i = 0; i < n; ++i)
+    for(int k = 0; k < 3; ++k) {
+      lo[k] = i == 0 ? point(i)[k] : (std::min)(lo[k], point(i)[k]);
+      hi[k] = i == 0 ? point(i)[k] : (std::max)(hi[k], point(i)[k]);
+    }
+  const double cells = double((1u << 21) - 1);  // 21 bits a coordinate, 63 bits a key
+  const double extent = (std::max)(hi[0] - lo[0], (std::max)(hi[1] - lo[1], hi[2] - lo[2]));
+  const double scale = extent > 0 ? cells / extent : 0.;
+  // the bits of a 21-bit number spread to every third bit
+  auto spread = [](std::uint64_t x) {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> key(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    std::uint64_t code = 0;
+    for(int k = 0; k < 3; ++k) {
+      double q = (point(i)[k] - lo[k]) * scale;
+      q = q >= 0 ? (std::min)(q, cells) : 0.;  // a NaN gives 0
+      code |= spread(static_cast<std::uint64_t>(q)) << k;
+    }
+    key[i] = {code, i};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::size_t> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = key[i].second;
+  return order;
 }
 
 // The sum of `weighted(i)` (an area-weighted normal) over the nodes i reached
@@ -127,26 +170,43 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
     });
   };
   if(!clustered) {
+    // the floods run on a copy of the faces renumbered in Morton order, so
+    // that the faces of a disc lie close together in memory. A flood visits
+    // the same faces in the same order as in the mesh's numbering (every face
+    // keeps the order of its neighbours), so every sum is the same.
+    const std::uint32_t nil = std::uint32_t(-1);
+    struct Node
+    {
+      std::array<double, 3> centroid, weighted;  // the area-weighted normal
+      std::array<std::uint32_t, 3> next;         // the smooth neighbours, `nil` for none
+    };
+    const std::vector<std::size_t> order =
+        morton_order(nf, [&](std::size_t i) -> const std::array<double, 3>& { return geo[i].centroid; });
+    std::vector<std::uint32_t> rank(nf);
+    for(std::size_t r = 0; r < nf; ++r) rank[order[r]] = static_cast<std::uint32_t>(r);
+    std::vector<Node> node(nf);
+    for(std::size_t r = 0; r < nf; ++r) {
+      const Face_geometry& g = geo[order[r]];
+      node[r].centroid = g.centroid;
+      for(int k = 0; k < 3; ++k) node[r].weighted[k] = g.area * g.normal[k];
+      for(int j = 0; j < 3; ++j) node[r].next[j] = next_to[order[r]][j] == none ? nil : rank[next_to[order[r]][j]];
+    }
     for_each_face(nf, [&](std::size_t s, std::vector<std::size_t>& stamp, std::vector<std::size_t>& queue) {
       bool near = false;  // most faces of a coarse mesh have no neighbour within the radius
       for(int j = 0; j < 3; ++j) {
-        const std::size_t g = next_to[s][j];
-        near = near || (g != none && squared_distance3(geo[s].centroid, geo[g].centroid) <= r2);
+        const std::uint32_t g = node[s].next[j];
+        near = near || (g != nil && squared_distance3(node[s].centroid, node[g].centroid) <= r2);
       }
       if(!near) return;
       const std::array<double, 3> sum = disc_sum(
-          s, geo[s].centroid, r2,
+          s, node[s].centroid, r2,
           [&](std::size_t i, const auto& visit) {
             for(int j = 0; j < 3; ++j)
-              if(next_to[i][j] != none) visit(next_to[i][j]);
+              if(node[i].next[j] != nil) visit(std::size_t(node[i].next[j]));
           },
-          [&](std::size_t g) -> const std::array<double, 3>& { return geo[g].centroid; },
-          [&](std::size_t i) {
-            return std::array<double, 3>{geo[i].area * geo[i].normal[0], geo[i].area * geo[i].normal[1],
-                                         geo[i].area * geo[i].normal[2]};
-          },
-          s, stamp, queue);
-      set_normal(s, sum);
+          [&](std::size_t g) -> const std::array<double, 3>& { return node[g].centroid; },
+          [&](std::size_t i) -> const std::array<double, 3>& { return node[i].weighted; }, s, stamp, queue);
+      set_normal(order[s], sum);
     });
     return out;
   }
@@ -198,19 +258,43 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
   }
+  // the floods run on the clusters renumbered in Morton order, each keeping
+  // the order of its neighbours (so every sum is the same), and the faces are
+  // taken in Morton order, so that consecutive discs share their clusters
+  const std::vector<std::size_t> order =
+      morton_order(nc, [&](std::size_t c) -> const std::array<double, 3>& { return centroid[c]; });
+  std::vector<std::uint32_t> rank(nc);
+  for(std::size_t r = 0; r < nc; ++r) rank[order[r]] = static_cast<std::uint32_t>(r);
+  struct Cluster
+  {
+    std::array<double, 3> centroid, normal_sum;
+    double area;
+    std::size_t first;  // its neighbours in `neighbour`, from `first` to the next cluster's
+  };
+  std::vector<Cluster> cluster(nc + 1);
+  std::vector<std::uint32_t> neighbour;
+  for(std::size_t r = 0; r < nc; ++r) {
+    const std::size_t c = order[r];
+    cluster[r] = {centroid[c], normal_sum[c], cluster_area[c], neighbour.size()};
+    for(std::size_t d : adjacent[c]) neighbour.push_back(rank[d]);
+  }
+  cluster[nc].first = neighbour.size();
+  const std::vector<std::size_t> face_order =
+      morton_order(nf, [&](std::size_t i) -> const std::array<double, 3>& { return geo[i].centroid; });
   for_each_face(nc, [&](std::size_t s, std::vector<std::size_t>& seen, std::vector<std::size_t>& scratch) {
-    const std::size_t c0 = cluster_of[s];
-    bool near = cluster_area[c0] > geo[s].area;  // the face's own cluster has other faces
-    for(std::size_t d : adjacent[c0]) near = near || squared_distance3(geo[s].centroid, centroid[d]) <= r2;
+    const std::size_t f = face_order[s], c0 = rank[cluster_of[f]];
+    bool near = cluster[c0].area > geo[f].area;  // the face's own cluster has other faces
+    for(std::size_t e = cluster[c0].first; e < cluster[c0 + 1].first; ++e)
+      near = near || squared_distance3(geo[f].centroid, cluster[neighbour[e]].centroid) <= r2;
     if(!near) return;
     const std::array<double, 3> sum = disc_sum(
-        c0, geo[s].centroid, r2,
+        c0, geo[f].centroid, r2,
         [&](std::size_t c, const auto& visit) {
-          for(std::size_t d : adjacent[c]) visit(d);
+          for(std::size_t e = cluster[c].first; e < cluster[c + 1].first; ++e) visit(std::size_t(neighbour[e]));
         },
-        [&](std::size_t c) -> const std::array<double, 3>& { return centroid[c]; },
-        [&](std::size_t c) -> const std::array<double, 3>& { return normal_sum[c]; }, s, seen, scratch);
-    set_normal(s, sum);
+        [&](std::size_t c) -> const std::array<double, 3>& { return cluster[c].centroid; },
+        [&](std::size_t c) -> const std::array<double, 3>& { return cluster[c].normal_sum; }, s, seen, scratch);
+    set_normal(f, sum);
   });
   return out;
 }
