@@ -1131,6 +1131,43 @@ BOOST_AUTO_TEST_CASE(face_by_face_normal_smoothing_is_the_flood_in_the_mesh_numb
   }
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(wedges_from_the_corner_table_are_the_walked_ones, Mesh, Mesh_types)
+{
+  // a trial groups the corners of its faces into wedges from a table of the
+  // mesh's corners: the same wedges, numbered the same, as walking the mesh,
+  // for sets of faces with holes, pinched vertices and cuts inside
+  typedef boost::graph_traits<Mesh> GT;
+  Mesh tm;
+  BOOST_REQUIRE(build(torus(24, 16), tm));
+  const auto fim = CGAL::get_initialized_face_index_map(tm, CGAL::parameters::default_values());
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, CGAL::parameters::default_values());
+  const QD::internal::Corner_table<Mesh> table(tm, fim);
+  std::vector<long> local(num_faces(tm), -1);
+  std::size_t compared = 0, cut_open = 0;
+  for(std::size_t modulus : {2, 3, 5, 1000}) {
+    std::vector<typename GT::face_descriptor> set;
+    for(auto f : faces(tm))
+      if(get(fim, f) % modulus != 1) set.push_back(f);
+    std::sort(set.begin(), set.end(), [&](auto x, auto y) { return get(fim, x) < get(fim, y); });
+    std::fill(local.begin(), local.end(), -1);
+    for(std::size_t i = 0; i < set.size(); ++i) local[get(fim, set[i])] = static_cast<long>(i);
+    for(std::size_t cut_every : {7, 1000000}) {
+      const auto is_cut = [&](typename GT::halfedge_descriptor h) {
+        return (std::min)(get(him, h), get(him, opposite(h, tm))) % cut_every == 0;
+      };
+      QD::internal::Wedges<Mesh> walked, read;
+      QD::internal::compute_wedges(tm, fim, set, local, is_cut, walked);
+      QD::internal::compute_wedges(table, fim, set, local, is_cut, read);
+      BOOST_TEST(walked.wedge_of_corner == read.wedge_of_corner);
+      BOOST_TEST((walked.vertex_of_wedge == read.vertex_of_wedge));
+      if(walked.size() > num_vertices(tm)) ++cut_open;
+      ++compared;
+    }
+  }
+  BOOST_TEST(compared == 8u);
+  BOOST_TEST(cut_open > 0u);  // some sets are cut open into more wedges than vertices
+}
+
 BOOST_AUTO_TEST_CASE(parallel_loops_run_every_task_once_dearest_first)
 {
   // the segmentation's tasks go out from the dearest to the cheapest (ties in index order)

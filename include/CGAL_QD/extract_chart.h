@@ -85,6 +85,83 @@ void compute_wedges(const TriangleMesh& tm, const FIM& fim,
   }
 }
 
+// The corners of every face of a mesh by face index, for `compute_wedges()`
+// on many sets of faces of the same mesh: corner 3 i + k (the target of the
+// k-th halfedge of face i, starting at `halfedge(face, tm)`) with its
+// halfedge, its vertex and the corner of the opposite halfedge in its face
+// (`none` on the mesh border), so that grouping the corners reads arrays
+// instead of walking the mesh.
+template <class TriangleMesh>
+struct Corner_table
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  static constexpr std::size_t none = std::size_t(-1);
+  std::vector<typename GT::halfedge_descriptor> halfedge_of_corner;
+  std::vector<typename GT::vertex_descriptor> vertex_of_corner;
+  std::vector<std::size_t> opposite_corner;
+
+  template <class FIM>
+  Corner_table(const TriangleMesh& tm, const FIM& fim)
+  {
+    const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+    halfedge_of_corner.resize(3 * nf);
+    vertex_of_corner.resize(3 * nf);
+    opposite_corner.assign(3 * nf, none);
+    for(typename GT::face_descriptor f : faces(tm)) {
+      int k = 0;
+      for(typename GT::halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        if(k == 3) break;  // triangles only
+        const std::size_t c = 3 * static_cast<std::size_t>(get(fim, f)) + std::size_t(k++);
+        halfedge_of_corner[c] = h;
+        vertex_of_corner[c] = target(h, tm);
+      }
+    }
+    for(std::size_t c = 0; c < 3 * nf; ++c) {
+      const typename GT::halfedge_descriptor o = opposite(halfedge_of_corner[c], tm);
+      if(is_border(o, tm)) continue;
+      const auto g = face(o, tm);
+      const typename GT::halfedge_descriptor g0 = halfedge(g, tm);
+      opposite_corner[c] = 3 * static_cast<std::size_t>(get(fim, g)) + (o == g0 ? 0 : (o == next(g0, tm) ? 1 : 2));
+    }
+  }
+};
+
+// `compute_wedges()` with the corners read from `table` (of the same mesh
+// and face index map): the same wedges, numbered the same
+template <class TriangleMesh, class FIM, class IsCut>
+void compute_wedges(const Corner_table<TriangleMesh>& table, const FIM& fim,
+                    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces,
+                    const std::vector<long>& local, const IsCut& is_cut, Wedges<TriangleMesh>& out)
+{
+  const std::size_t nc = 3 * faces.size();
+  Union_find sets(nc);
+  for(std::size_t i = 0; i < faces.size(); ++i) {
+    const std::size_t first = 3 * static_cast<std::size_t>(get(fim, faces[i]));
+    for(std::size_t k = 0; k < 3; ++k) {
+      const std::size_t o = table.opposite_corner[first + k];
+      if(o == Corner_table<TriangleMesh>::none) continue;
+      const long j = local[o / 3];
+      if(j < 0 || is_cut(table.halfedge_of_corner[first + k])) continue;
+      // corner k of face i is the target of its halfedge, the source of the
+      // opposite one: the corner before it in its face; and the other way round
+      const std::size_t kk = o % 3, base = 3 * static_cast<std::size_t>(j);
+      sets.unite(3 * i + k, base + (kk + 2) % 3);
+      sets.unite(3 * i + (k + 2) % 3, base + kk);
+    }
+  }
+  out.wedge_of_corner.assign(nc, 0);
+  out.vertex_of_wedge.clear();
+  std::vector<std::size_t> id(nc, std::size_t(-1));
+  for(std::size_t c = 0; c < nc; ++c) {
+    const std::size_t r = sets.find(c);
+    if(id[r] == std::size_t(-1)) {
+      id[r] = out.vertex_of_wedge.size();
+      out.vertex_of_wedge.push_back(table.vertex_of_corner[3 * static_cast<std::size_t>(get(fim, faces[c / 3])) + c % 3]);
+    }
+    out.wedge_of_corner[c] = id[r];
+  }
+}
+
 // faces of chart `chart` in the order of `faces(tm)`, and the local index map
 template <class TriangleMesh, class FaceChartMap, class FIM>
 void faces_of_chart(const TriangleMesh& tm, const FaceChartMap& face_chart, std::size_t chart, const FIM& fim,

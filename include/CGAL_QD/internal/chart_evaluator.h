@@ -68,7 +68,7 @@ public:
 
   Chart_evaluator(const TriangleMesh& tm, const FIM& fim, const VIM& vim,
                   const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds)
-      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds)
+      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds), m_corners(tm, fim)
   {}
 
   // evaluations whose LPFB reached its iteration limit
@@ -99,7 +99,7 @@ public:
       // trials: a trial sets and resets only its own faces
       Scratch_buffer local(*this);
       for(std::size_t i = 0; i < faces.size(); ++i) (*local)[get(m_fim, faces[i])] = static_cast<long>(i);
-      compute_wedges(m_tm, m_fim, faces, *local, is_cut, wedges);
+      compute_wedges(m_corners, m_fim, faces, *local, is_cut, wedges);
       for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
     }
     if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact, stop);
@@ -443,6 +443,7 @@ private:
   VIM m_vim;
   const std::vector<std::array<double, 3>>& m_points;
   Merge_thresholds m_thresholds;
+  Corner_table<TriangleMesh> m_corners;  // the corners of the mesh, for the wedges of every evaluation
   mutable std::atomic<std::size_t> m_not_converged{0};
   mutable std::mutex m_scratch_mutex;
   mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
