@@ -45,6 +45,25 @@ struct Wedges
   std::size_t size() const { return vertex_of_wedge.size(); }
 };
 
+// The wedges of `out` numbered in the order of their first corners, from the
+// groups of corners `sets`; `vertex_of_corner(c)` is the vertex of corner c.
+template <class TriangleMesh, class VertexOfCorner>
+void number_wedges(Union_find& sets, Wedges<TriangleMesh>& out, const VertexOfCorner& vertex_of_corner)
+{
+  const std::size_t nc = sets.size();
+  out.wedge_of_corner.assign(nc, 0);
+  out.vertex_of_wedge.clear();
+  std::vector<std::size_t> id(nc, std::size_t(-1));
+  for(std::size_t c = 0; c < nc; ++c) {
+    const std::size_t r = sets.find(c);
+    if(id[r] == std::size_t(-1)) {
+      id[r] = out.vertex_of_wedge.size();
+      out.vertex_of_wedge.push_back(vertex_of_corner(c));
+    }
+    out.wedge_of_corner[c] = id[r];
+  }
+}
+
 // `local[fim(f)]` is the position of f in `faces`, or -1 for a face that is
 // not in the set; `is_cut(h)` tells whether the edge of halfedge h is cut.
 template <class TriangleMesh, class FIM, class IsCut>
@@ -70,19 +89,11 @@ void compute_wedges(const TriangleMesh& tm, const FIM& fim,
       sets.unite(corner(h), corner(prev(o, tm)));  // at target(h)
       sets.unite(corner(prev(h, tm)), corner(o));  // at source(h)
     }
-  out.wedge_of_corner.assign(nc, 0);
-  out.vertex_of_wedge.clear();
-  std::vector<std::size_t> id(nc, std::size_t(-1));
-  for(std::size_t c = 0; c < nc; ++c) {
-    const std::size_t r = sets.find(c);
-    if(id[r] == std::size_t(-1)) {
-      id[r] = out.vertex_of_wedge.size();
-      halfedge_descriptor h = halfedge(faces[c / 3], tm);
-      for(std::size_t k = 0; k < c % 3; ++k) h = next(h, tm);
-      out.vertex_of_wedge.push_back(target(h, tm));
-    }
-    out.wedge_of_corner[c] = id[r];
-  }
+  number_wedges(sets, out, [&](std::size_t c) {
+    halfedge_descriptor h = halfedge(faces[c / 3], tm);
+    for(std::size_t k = 0; k < c % 3; ++k) h = next(h, tm);
+    return target(h, tm);
+  });
 }
 
 // The corners of every face of a mesh by face index, for `compute_wedges()`
@@ -149,17 +160,9 @@ void compute_wedges(const Corner_table<TriangleMesh>& table, const FIM& fim,
       sets.unite(3 * i + (k + 2) % 3, base + kk);
     }
   }
-  out.wedge_of_corner.assign(nc, 0);
-  out.vertex_of_wedge.clear();
-  std::vector<std::size_t> id(nc, std::size_t(-1));
-  for(std::size_t c = 0; c < nc; ++c) {
-    const std::size_t r = sets.find(c);
-    if(id[r] == std::size_t(-1)) {
-      id[r] = out.vertex_of_wedge.size();
-      out.vertex_of_wedge.push_back(table.vertex_of_corner[3 * static_cast<std::size_t>(get(fim, faces[c / 3])) + c % 3]);
-    }
-    out.wedge_of_corner[c] = id[r];
-  }
+  number_wedges(sets, out, [&](std::size_t c) {
+    return table.vertex_of_corner[3 * static_cast<std::size_t>(get(fim, faces[c / 3])) + c % 3];
+  });
 }
 
 // faces of chart `chart` in the order of `faces(tm)`, and the local index map
