@@ -1157,7 +1157,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(wedges_from_the_corner_table_are_the_walked_ones, 
       };
       QD::internal::Wedges<Mesh> walked, read;
       QD::internal::compute_wedges(tm, fim, set, local, is_cut, walked);
-      QD::internal::compute_wedges(table, fim, set, local, is_cut, read);
+      QD::internal::compute_wedges(table, tm, fim, set, local, is_cut, read);
       BOOST_TEST(walked.wedge_of_corner == read.wedge_of_corner);
       BOOST_TEST((walked.vertex_of_wedge == read.vertex_of_wedge));
       if(walked.size() > num_vertices(tm)) ++cut_open;

@@ -99,16 +99,15 @@ void compute_wedges(const TriangleMesh& tm, const FIM& fim,
 // The corners of every face of a mesh by face index, for `compute_wedges()`
 // on many sets of faces of the same mesh: corner 3 i + k (the target of the
 // k-th halfedge of face i, starting at `halfedge(face, tm)`) with its
-// halfedge, its vertex and the corner of the opposite halfedge in its face
-// (`none` on the mesh border), so that grouping the corners reads arrays
-// instead of walking the mesh.
+// halfedge and the corner of the opposite halfedge in its face (`none` on the
+// mesh border), so that grouping the corners reads arrays instead of walking
+// the mesh.
 template <class TriangleMesh>
 struct Corner_table
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   static constexpr std::size_t none = std::size_t(-1);
   std::vector<typename GT::halfedge_descriptor> halfedge_of_corner;
-  std::vector<typename GT::vertex_descriptor> vertex_of_corner;
   std::vector<std::size_t> opposite_corner;
 
   template <class FIM>
@@ -116,15 +115,12 @@ struct Corner_table
   {
     const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
     halfedge_of_corner.resize(3 * nf);
-    vertex_of_corner.resize(3 * nf);
     opposite_corner.assign(3 * nf, none);
     for(typename GT::face_descriptor f : faces(tm)) {
       int k = 0;
       for(typename GT::halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
         if(k == 3) break;  // triangles only
-        const std::size_t c = 3 * static_cast<std::size_t>(get(fim, f)) + std::size_t(k++);
-        halfedge_of_corner[c] = h;
-        vertex_of_corner[c] = target(h, tm);
+        halfedge_of_corner[3 * static_cast<std::size_t>(get(fim, f)) + std::size_t(k++)] = h;
       }
     }
     for(std::size_t c = 0; c < 3 * nf; ++c) {
@@ -137,10 +133,10 @@ struct Corner_table
   }
 };
 
-// `compute_wedges()` with the corners read from `table` (of the same mesh
-// and face index map): the same wedges, numbered the same
+// `compute_wedges()` with the corners read from `table` (of `tm` and `fim`):
+// the same wedges, numbered the same
 template <class TriangleMesh, class FIM, class IsCut>
-void compute_wedges(const Corner_table<TriangleMesh>& table, const FIM& fim,
+void compute_wedges(const Corner_table<TriangleMesh>& table, const TriangleMesh& tm, const FIM& fim,
                     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces,
                     const std::vector<long>& local, const IsCut& is_cut, Wedges<TriangleMesh>& out)
 {
@@ -161,7 +157,7 @@ void compute_wedges(const Corner_table<TriangleMesh>& table, const FIM& fim,
     }
   }
   number_wedges(sets, out, [&](std::size_t c) {
-    return table.vertex_of_corner[3 * static_cast<std::size_t>(get(fim, faces[c / 3])) + c % 3];
+    return target(table.halfedge_of_corner[3 * static_cast<std::size_t>(get(fim, faces[c / 3])) + c % 3], tm);
   });
 }
 

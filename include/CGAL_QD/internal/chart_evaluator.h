@@ -99,7 +99,7 @@ public:
       // trials: a trial sets and resets only its own faces
       Scratch_buffer local(*this);
       for(std::size_t i = 0; i < faces.size(); ++i) (*local)[get(m_fim, faces[i])] = static_cast<long>(i);
-      compute_wedges(m_corners, m_fim, faces, *local, is_cut, wedges);
+      compute_wedges(m_corners, m_tm, m_fim, faces, *local, is_cut, wedges);
       for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
     }
     if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact, stop);
