@@ -41,6 +41,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -666,8 +667,17 @@ BOOST_AUTO_TEST_CASE(deterministic_and_parallel_equals_sequential)
   Chart_map<Surface_mesh> a, b, c;
   const auto ra = QD::segment_quasi_developable<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(a));
   const auto rb = QD::segment_quasi_developable<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(b));
-  const auto rc = QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(tm, boost::make_assoc_property_map(c));
+  // the progress callback is called on the calling thread only
+  std::atomic<std::size_t> calls{0}, calls_elsewhere{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  const auto rc = QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(
+      tm, boost::make_assoc_property_map(c), CGAL::parameters::callback([&](const char*, double) {
+        ++calls;
+        if(std::this_thread::get_id() != caller) ++calls_elsewhere;
+      }));
   BOOST_REQUIRE(ra);
+  BOOST_TEST(calls.load() > 0u);
+  BOOST_TEST(calls_elsewhere.load() == 0u);
   BOOST_TEST((a == b));
   BOOST_TEST((a == c));
   BOOST_TEST(ra.merging.trials == rb.merging.trials);

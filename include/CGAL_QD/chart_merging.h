@@ -108,7 +108,7 @@ struct Merging_result
 ///     charts is tried only when the chart its removal gives is at least rho times as compact (4 pi area /
 ///     perimeter^2, in 3D) as the less compact of the two; otherwise it is kept without a trial (and
 ///     tried again when one of its charts changes). 0 tries every curve, as the paper does
-///   - `callback`: called with (step name, fraction done) during the run
+///   - `callback`: called with (step name, fraction done) during the run, on the calling thread
 ///   - `verbose`: print every trial to `std::cerr` (default `false`)
 ///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
 /// \returns a `Merging_result` whose `seam_edges` are the edges to cut (the

@@ -120,7 +120,8 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 ///   `CGAL_QD::parameters::area_preservation`), the switches `CGAL_QD::parameters::refine_boundaries`,
 ///   `CGAL_QD::parameters::denoise_boundaries`, `CGAL_QD::parameters::merge_charts`,
 ///   `CGAL_QD::parameters::denoised_point_map` (receives the denoised points), `callback` (called with a
-///   step name, "vsa", "refine", "denoise", "split", "merge" or "flatten", and the fraction done), `verbose`
+///   step name, "vsa", "refine", "denoise", "split", "merge" or "flatten", and the fraction done, always
+///   on the calling thread), `verbose`
 ///   (a line per step and per trial on `std::cerr`), and `vertex_point_map`, `vertex_index_map`,
 ///   `face_index_map`, `halfedge_index_map`.
 /// \returns a `Segmentation_result`; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES` or

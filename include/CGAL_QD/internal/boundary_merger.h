@@ -23,12 +23,18 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
+#include <deque>
+#include <exception>
 #include <functional>
 #include <iostream>
+#include <iterator>
+#include <list>
 #include <memory>
 #include <mutex>
 #include <queue>
+#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -200,12 +206,36 @@ public:
       const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
       return x.r1 == r1 && x.r2 == r2 && x.v1 == m_version[r1] && x.v2 == m_version[r2];
     };
+    // a trial under way: its curve, the charts and versions it started from,
+    // and the flag that stops it once an acceptance makes it stale
+    struct Running
+    {
+      std::size_t c = 0, r1 = 0, r2 = 0, v1 = 0, v2 = 0;
+      std::atomic<bool> stop{false};
+    };
+    std::list<Running> running;
 
     std::size_t trials = 0, merges = 0, decided = 0;
-    const std::size_t batch = batch_size<ConcurrencyTag>();
-    while(!heap.empty()) {
-      std::vector<std::size_t> take;
-      while(!heap.empty() && take.size() < batch) {
+    // The curves taken from the heap, in heap order, and not decided yet.
+    // Every decision is taken at the front of this window, one at a time and
+    // in heap order, exactly as the sequential run takes it, while the
+    // threads run the trials of the curves behind the front ahead of time
+    // and keep their results for as long as the charts on either side are
+    // unchanged. A curve enters the window with the charts as the decisions
+    // before it leave them, unless one of those decisions is an acceptance,
+    // which puts the rest of the window back into the heap.
+    std::deque<std::size_t> window;
+    const std::size_t window_size = batch_size<ConcurrencyTag>();
+    std::mutex mutex;
+    std::condition_variable changed;
+    std::exception_ptr failure;
+    const std::thread::id caller = std::this_thread::get_id();
+    auto report_progress = [&] {
+      progress("merge", (std::min)(1., double(decided) / double((std::max<std::size_t>)(1, m_curves.size() + merges))));
+    };
+
+    auto fill_window = [&] {
+      while(window.size() < window_size && !heap.empty()) {
         const Entry e = heap.top();
         heap.pop();
         const std::size_t c = static_cast<std::size_t>(-std::get<1>(e));
@@ -219,84 +249,102 @@ public:
           ++decided;
           continue;
         }
-        take.push_back(c);
+        window.push_back(c);
       }
-      std::vector<std::size_t> to_evaluate;
-      for(std::size_t c : take)
-        if(!cache_valid(c)) to_evaluate.push_back(c);
-      // the largest merged charts first
-      std::vector<std::size_t> size(to_evaluate.size(), 0);
-      for(std::size_t t = 0; t < to_evaluate.size(); ++t) {
-        const std::size_t r1 = find(m_curves[to_evaluate[t]].a), r2 = find(m_curves[to_evaluate[t]].b);
-        for(std::size_t r : {r1, r2}) {
-          for(std::size_t k : m_members[r]) size[t] += m_faces_of_chart[k].size();
-          if(r1 == r2) break;
-        }
-      }
-      const std::vector<std::size_t> largest_first = dearest_first(size);
-      // As the trials of the batch end, the first one in the order of `take`
-      // whose every predecessor is known to be rejected is known to be
-      // accepted: the trials after it that share one of its charts are then
-      // stale (the loop below takes it and pushes them back), and stop.
-      Batch_outcome outcome(take.size());
-      std::vector<std::size_t> position(to_evaluate.size());
-      for(std::size_t t = 0, k = 0; t < take.size(); ++t) {
-        if(k < to_evaluate.size() && to_evaluate[k] == take[t])
-          position[k++] = t;
-        else
-          outcome.known(t, cache[take[t]].report.accepted);
-      }
-      std::unique_ptr<std::atomic<bool>[]> stale(new std::atomic<bool>[to_evaluate.size()]);
-      for(std::size_t k = 0; k < to_evaluate.size(); ++k) stale[k] = false;
-      std::atomic<std::size_t> evaluated{0};
-      std::mutex mutex;
-      for_each_index<ConcurrencyTag>(to_evaluate.size(), [&](std::size_t i) {
-        const std::size_t k = largest_first[i], c = to_evaluate[k];
-        if(stale[k]) return;
-        Cached x;
-        x.r1 = find(m_curves[c].a);
-        x.r2 = find(m_curves[c].b);
-        x.v1 = m_version[x.r1];
-        x.v2 = m_version[x.r2];
-        x.report = trial(c, &stale[k]);
-        if(stale[k]) return;  // it may have given up: not kept
-        cache[c] = x;
-        ++evaluated;
-        std::lock_guard<std::mutex> lock(mutex);
-        outcome.known(position[k], x.report.accepted);
-        const std::size_t first = outcome.first_accepted();
-        if(first == Batch_outcome::none) return;
-        const std::size_t a = find(m_curves[take[first]].a), b = find(m_curves[take[first]].b);
-        for(std::size_t j = 0; j < to_evaluate.size(); ++j) {
-          const std::size_t r1 = find(m_curves[to_evaluate[j]].a), r2 = find(m_curves[to_evaluate[j]].b);
-          if(position[j] > first && (r1 == a || r1 == b || r2 == a || r2 == b)) stale[j] = true;
-        }
-      });
-      trials += evaluated;
-      for(std::size_t t = 0; t < take.size(); ++t) {
-        const std::size_t c = take[t];
+    };
+    // takes every decision whose trial is known, in order
+    auto decide = [&] {
+      for(;;) {
+        fill_window();
+        if(window.empty() || !cache_valid(window.front())) return;
+        const std::size_t c = window.front();
+        window.pop_front();
         const Chart_report& rep = cache[c].report;
         if(verbose)
           std::cerr << "  curve " << c << " between charts " << find(m_curves[c].a) << " and " << find(m_curves[c].b)
                     << ": " << (rep.accepted ? "merged" : "kept") << " (" << error_message(rep.status) << ", A "
                     << rep.area_distortion << " %, L2 " << rep.l2_stretch << (rep.overlap ? ", overlap" : "") << ")\n";
+        ++decided;
         if(!rep.accepted) {
           m_curves[c].active = false;
-          ++decided;
-          continue;
+        } else {
+          ++merges;
+          const std::size_t a = find(m_curves[c].a), b = find(m_curves[c].b);
+          accept(c);
+          // the trials that started from one of the two charts are stale
+          for(Running& r : running)
+            if(r.r1 == a || r.r1 == b || r.r2 == a || r.r2 == b) r.stop = true;
+          // the rest of the window goes back: the sequential run would see the new keys
+          for(std::size_t u : window) push(u);
+          window.clear();
+          for(std::size_t k : m_members[find(m_curves[c].a)])
+            for(std::size_t d : m_curves_of_chart[k])
+              if(!m_curves[d].eliminated) push(d);
         }
-        ++merges;
-        ++decided;
-        accept(c);
-        // the rest of the batch goes back: the sequential run would see the new keys
-        for(std::size_t u = t + 1; u < take.size(); ++u) push(take[u]);
-        for(std::size_t k : m_members[find(m_curves[c].a)])
-          for(std::size_t d : m_curves_of_chart[k])
-            if(!m_curves[d].eliminated) push(d);
-        break;
+        // on the calling thread only, like every other call of `progress`
+        if(progress && std::this_thread::get_id() == caller) report_progress();
       }
-      if(progress) progress("merge", (std::min)(1., double(decided) / double((std::max<std::size_t>)(1, m_curves.size() + merges))));
-    }
+    };
+    auto work = [&] {
+      std::unique_lock<std::mutex> lock(mutex);
+      try {
+        for(;;) {
+          if(failure) return;
+          decide();
+          if(window.empty() && running.empty()) break;  // the heap is empty too
+          // the first curve of the window with no result and no trial under way
+          auto pick = window.end();
+          for(auto w = window.begin(); w != window.end() && pick == window.end(); ++w)
+            if(!cache_valid(*w) && std::none_of(running.begin(), running.end(),
+                                                [&](const Running& r) { return r.c == *w && !r.stop; }))
+              pick = w;
+          if(pick == window.end()) {
+            changed.wait(lock);
+            continue;
+          }
+          running.emplace_back();
+          const auto me = std::prev(running.end());
+          Running& r = *me;
+          r.c = *pick;
+          r.r1 = find(m_curves[r.c].a);
+          r.r2 = find(m_curves[r.c].b);
+          r.v1 = m_version[r.r1];
+          r.v2 = m_version[r.r2];
+          const Trial_input input = trial_input(r.c);
+          lock.unlock();
+          Chart_report report;
+          try {
+            report = trial(input, &r.stop);
+          } catch(...) {
+            lock.lock();
+            running.erase(me);
+            throw;
+          }
+          lock.lock();
+          if(!r.stop) {
+            Cached& x = cache[r.c];
+            x.r1 = r.r1;
+            x.r2 = r.r2;
+            x.v1 = r.v1;
+            x.v2 = r.v2;
+            x.report = std::move(report);
+            ++trials;
+          }
+          running.erase(me);
+          changed.notify_all();
+        }
+      } catch(...) {
+        if(!failure) failure = std::current_exception();
+      }
+      changed.notify_all();
+    };
+    const std::size_t workers = number_of_workers<ConcurrencyTag>();
+    if(workers > 1)
+      for_each_index<ConcurrencyTag>(workers, [&](std::size_t) { work(); });
+    else
+      work();
+    if(failure) std::rethrow_exception(failure);
+    if(progress) report_progress();
     // final chart ids: patches numbered by their smallest face index
     std::vector<std::size_t> id(m_n, std::size_t(-1));
     std::size_t count = 0;
@@ -383,43 +431,38 @@ private:
                                             compactness(m_area[r2], m_perimeter[r2]));
   }
 
-  // What is known of the trials of a batch, in the order of the batch.
-  class Batch_outcome
+  // what the trial of curve `c` needs of the merging's state, taken while no
+  // decision changes it: the initial charts of the two sides, and which
+  // curves are still seams
+  struct Trial_input
   {
-  public:
-    static constexpr std::size_t none = std::size_t(-1);
-    explicit Batch_outcome(std::size_t n) : m_state(n, unknown) {}
-    void known(std::size_t t, bool accepted) { m_state[t] = accepted ? yes : no; }
-    // the first trial accepted after trials all known to be rejected, or `none`
-    std::size_t first_accepted() const
-    {
-      for(std::size_t t = 0; t < m_state.size(); ++t) {
-        if(m_state[t] == unknown) return none;
-        if(m_state[t] == yes) return t;
-      }
-      return none;
-    }
-
-  private:
-    enum State : char { unknown, no, yes };
-    std::vector<State> m_state;
+    std::size_t c = 0;
+    std::vector<std::size_t> members;
+    std::vector<char> seam;  // by curve
   };
+  Trial_input trial_input(std::size_t c) const
+  {
+    Trial_input input;
+    input.c = c;
+    const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
+    input.members = m_members[r1];
+    if(r1 != r2) input.members.insert(input.members.end(), m_members[r2].begin(), m_members[r2].end());
+    input.seam.resize(m_curves.size());
+    for(std::size_t d = 0; d < m_curves.size(); ++d) input.seam[d] = d != c && !m_curves[d].eliminated;
+    return input;
+  }
 
-  // the merging trial of curve `c`, which gives up once `stop` is set
-  Chart_report trial(std::size_t c, const std::atomic<bool>* stop = nullptr) const
+  // the merging trial of `input`, which gives up once `stop` is set
+  Chart_report trial(const Trial_input& input, const std::atomic<bool>* stop = nullptr) const
   {
     std::vector<face_descriptor> fs;
-    const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
-    for(std::size_t r : {r1, r2}) {
-      for(std::size_t k : m_members[r]) fs.insert(fs.end(), m_faces_of_chart[k].begin(), m_faces_of_chart[k].end());
-      if(r1 == r2) break;
-    }
+    for(std::size_t k : input.members) fs.insert(fs.end(), m_faces_of_chart[k].begin(), m_faces_of_chart[k].end());
     std::sort(fs.begin(), fs.end(), [&](face_descriptor x, face_descriptor y) { return get(m_fim, x) < get(m_fim, y); });
     return m_eval.evaluate(
         fs,
         [&](halfedge_descriptor h) {
           const long d = m_curve_of[get(m_him, h)];
-          return d >= 0 && std::size_t(d) != c && !m_curves[d].eliminated;
+          return d >= 0 && input.seam[std::size_t(d)] != 0;
         },
         nullptr, nullptr, nullptr, 1000., true, stop);
   }

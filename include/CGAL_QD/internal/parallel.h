@@ -49,6 +49,18 @@ void for_each_index(std::size_t n, const Task& task)
   for(std::size_t i = 0; i < n; ++i) task(i);
 }
 
+// how many threads the loops of `ConcurrencyTag` run on: those of TBB's
+// arena with CGAL::Parallel_tag where TBB is linked, else 1
+template <class ConcurrencyTag>
+std::size_t number_of_workers()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    return static_cast<std::size_t>((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#endif
+  return 1;
+}
+
 // the indices of `cost` from the largest cost to the smallest (ties by index)
 template <class Cost>
 std::vector<std::size_t> dearest_first(const std::vector<Cost>& cost)
