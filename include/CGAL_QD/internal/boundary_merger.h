@@ -206,11 +206,13 @@ public:
       const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
       return x.r1 == r1 && x.r2 == r2 && x.v1 == m_version[r1] && x.v2 == m_version[r2];
     };
-    // a trial under way: its curve, the charts and versions it started from,
-    // and the flag that stops it once an acceptance makes it stale
+    // a trial under way: its curve, the charts and versions it started from
+    // (its result once it ends), and the flag that stops it once an
+    // acceptance makes it stale
     struct Running
     {
-      std::size_t c = 0, r1 = 0, r2 = 0, v1 = 0, v2 = 0;
+      std::size_t c = 0;
+      Cached x;
       std::atomic<bool> stop{false};
     };
     std::list<Running> running;
@@ -273,7 +275,7 @@ public:
           accept(c);
           // the trials that started from one of the two charts are stale
           for(Running& r : running)
-            if(r.r1 == a || r.r1 == b || r.r2 == a || r.r2 == b) r.stop = true;
+            if(r.x.r1 == a || r.x.r1 == b || r.x.r2 == a || r.x.r2 == b) r.stop = true;
           // the rest of the window goes back: the sequential run would see the new keys
           for(std::size_t u : window) push(u);
           window.clear();
@@ -306,15 +308,14 @@ public:
           const auto me = std::prev(running.end());
           Running& r = *me;
           r.c = *pick;
-          r.r1 = find(m_curves[r.c].a);
-          r.r2 = find(m_curves[r.c].b);
-          r.v1 = m_version[r.r1];
-          r.v2 = m_version[r.r2];
+          r.x.r1 = find(m_curves[r.c].a);
+          r.x.r2 = find(m_curves[r.c].b);
+          r.x.v1 = m_version[r.x.r1];
+          r.x.v2 = m_version[r.x.r2];
           const Trial_input input = trial_input(r.c);
           lock.unlock();
-          Chart_report report;
           try {
-            report = trial(input, &r.stop);
+            r.x.report = trial(input, &r.stop);
           } catch(...) {
             lock.lock();
             running.erase(me);
@@ -322,12 +323,7 @@ public:
           }
           lock.lock();
           if(!r.stop) {
-            Cached& x = cache[r.c];
-            x.r1 = r.r1;
-            x.r2 = r.r2;
-            x.v1 = r.v1;
-            x.v2 = r.v2;
-            x.report = std::move(report);
+            cache[r.c] = std::move(r.x);
             ++trials;
           }
           running.erase(me);
@@ -338,11 +334,7 @@ public:
       }
       changed.notify_all();
     };
-    const std::size_t workers = number_of_workers<ConcurrencyTag>();
-    if(workers > 1)
-      for_each_index<ConcurrencyTag>(workers, [&](std::size_t) { work(); });
-    else
-      work();
+    for_each_index<ConcurrencyTag>(number_of_workers<ConcurrencyTag>(), [&](std::size_t) { work(); });
     if(failure) std::rethrow_exception(failure);
     if(progress) report_progress();
     // final chart ids: patches numbered by their smallest face index
@@ -436,14 +428,12 @@ private:
   // curves are still seams
   struct Trial_input
   {
-    std::size_t c = 0;
     std::vector<std::size_t> members;
     std::vector<char> seam;  // by curve
   };
   Trial_input trial_input(std::size_t c) const
   {
     Trial_input input;
-    input.c = c;
     const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
     input.members = m_members[r1];
     if(r1 != r2) input.members.insert(input.members.end(), m_members[r2].begin(), m_members[r2].end());

@@ -24,6 +24,18 @@
 namespace CGAL_QD {
 namespace internal {
 
+// how many threads the loops of `ConcurrencyTag` run on: those of TBB's
+// arena with CGAL::Parallel_tag where TBB is linked, else 1
+template <class ConcurrencyTag>
+std::size_t number_of_workers()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    return static_cast<std::size_t>((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#endif
+  return 1;
+}
+
 // Runs `task(i)` for i in [0, n), in parallel when ConcurrencyTag is
 // CGAL::Parallel_tag and TBB is linked: the indices are handed out in
 // increasing order, each to the first thread that is free, so that tasks
@@ -35,8 +47,7 @@ void for_each_index(std::size_t n, const Task& task)
 #ifdef CGAL_LINKED_WITH_TBB
   if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && n > 1) {
     std::atomic<std::size_t> next{0};
-    const std::size_t threads =
-        (std::min)(n, static_cast<std::size_t>((std::max)(1, tbb::this_task_arena::max_concurrency())));
+    const std::size_t threads = (std::min)(n, number_of_workers<ConcurrencyTag>());
     tbb::parallel_for(
         std::size_t(0), threads,
         [&](std::size_t) {
@@ -47,18 +58,6 @@ void for_each_index(std::size_t n, const Task& task)
   }
 #endif
   for(std::size_t i = 0; i < n; ++i) task(i);
-}
-
-// how many threads the loops of `ConcurrencyTag` run on: those of TBB's
-// arena with CGAL::Parallel_tag where TBB is linked, else 1
-template <class ConcurrencyTag>
-std::size_t number_of_workers()
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    return static_cast<std::size_t>((std::max)(1, tbb::this_task_arena::max_concurrency()));
-#endif
-  return 1;
 }
 
 // the indices of `cost` from the largest cost to the smallest (ties by index)
