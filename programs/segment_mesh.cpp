@@ -215,6 +215,8 @@ int main(int argc, char** argv)
 
   auto chart = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
   namespace QP = CGAL_QD::parameters;
+  // the paper's criterion never shares charts out (the library's default too)
+  const bool share_out = o.share_out && segment_mesh::criterion(o) != CGAL_QD::Chart_criterion::LPFB_IP;
   // CGAL_QD's parameters take the rest of the pack as a second argument
   const auto np = QP::area_preservation(o.area_preservation, QP::arap_border(
       segment_mesh::arap_border(o),
@@ -237,11 +239,13 @@ int main(int argc, char** argv)
                                       QP::merge_order(segment_mesh::merge_order(o),
                                                       QP::compactness_ratio(
                                                           o.compactness_ratio,
-                                                          QP::final_flattening(
-                                                              !o.smooth_seams,
-                                                              CGAL::parameters::verbose(o.verbose).callback(
-                                                                  std::function<void(const char*, double)>(
-                                                                      progress)))))))))))))));
+                                                          QP::share_out_small_charts(
+                                                              share_out,
+                                                              QP::final_flattening(
+                                                                  !o.smooth_seams,
+                                                                  CGAL::parameters::verbose(o.verbose).callback(
+                                                                      std::function<void(const char*, double)>(
+                                                                          progress))))))))))))))));
   CGAL_QD::Segmentation_result<Mesh> r =
       o.sequential ? CGAL_QD::segment_quasi_developable<CGAL::Sequential_tag>(mesh, chart, np)
                    : CGAL_QD::segment_quasi_developable<CGAL::Parallel_if_available_tag>(mesh, chart, np);
@@ -370,7 +374,13 @@ int main(int argc, char** argv)
             << "  denoising      " << (o.denoise ? std::to_string(r.time_denoise_ms) + " ms" : std::string("off"))
             << "\n"
             << "  merging        " << r.charts_before_merging << " -> " << r.number_of_charts << " charts, "
-            << r.merging.trials << " trials, " << r.time_merge_ms << " ms\n"
+            << r.merging.trials << " trials"
+            << (r.merging.charts_shared_out > 0
+                    ? ", " + std::to_string(r.merging.charts_shared_out) +
+                          (r.merging.charts_shared_out == 1 ? " small chart" : " small charts") + " shared out (" +
+                          std::to_string(r.merging.sharing_trials) + " trials)"
+                    : std::string())
+            << ", " << r.time_merge_ms << " ms\n"
             << "  flattening     " << r.time_flatten_ms << " ms\n"
             << "  max A(Omega)   " << r.max_area_distortion << " %\n"
             << "  max L2         " << r.max_l2_stretch << "\n"

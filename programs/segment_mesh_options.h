@@ -45,7 +45,7 @@ struct Options
   std::string arap_border = "free";
   std::string merge_order = "smallest";
   double compactness_ratio = 0.6;
-  bool denoise = false, refine = true, merge = true, smooth_seams = true, sequential = false;
+  bool denoise = false, refine = true, merge = true, share_out = true, smooth_seams = true, sequential = false;
   // the output
   bool json = false, verbose = false, quiet = false;
 };
@@ -210,6 +210,10 @@ inline void add_options(CLI::App& app, Options& o)
   app.add_flag("!--no-refine", o.refine, "Skip the minimum-cut refinement of the chart borders (step 2)")
       ->group(segmentation);
   app.add_flag("!--no-merge", o.merge, "Skip the merging (step 4): the charts of steps 1 to 3, split where they fail")
+      ->group(segmentation);
+  app.add_flag("!--no-share-out", o.share_out,
+               "Keep the small charts that the merging leaves instead of sharing them out among their neighbours "
+               "(never done with --criterion lpfb-ip)")
       ->group(segmentation);
   app.add_flag("!--no-smooth-seams", o.smooth_seams,
                "Keep the seams along the triangle edges instead of smoothing them through the triangles")

@@ -75,6 +75,8 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
   j["charts"] = r.number_of_charts;
   j["merge_trials"] = r.merging.trials;
   j["merges"] = r.merging.merges;
+  j["charts_shared_out"] = r.merging.charts_shared_out;
+  j["sharing_trials"] = r.merging.sharing_trials;
   j["lpfb_not_converged"] = r.merging.lpfb_not_converged;
   j["max_area_distortion_pct"] = number(r.max_area_distortion);
   j["max_l2_stretch"] = number(r.max_l2_stretch);

@@ -656,6 +656,91 @@ BOOST_AUTO_TEST_CASE(closed_surfaces_of_any_topology_and_components)
   expect_valid_segmentation(tm, chart, r);
 }
 
+// A small chart in the middle of a flat square, between a left and a right
+// chart: shared out between them where both enlarged charts pass the trial,
+// kept where one of them would fail (one neighbour alone would be a merge).
+BOOST_AUTO_TEST_CASE(small_chart_shared_out_among_neighbours)
+{
+  const Surface_mesh tm = make<Surface_mesh>(grid(20, 20, [](double u, double v) { return P3{u, v, 0.}; }));
+  const auto fim = get(boost::face_index, tm);
+  const auto him = get(boost::halfedge_index, tm);
+  const auto vim = get(boost::vertex_index, tm);
+  const std::vector<QD::internal::Face_geometry> geo = QD::internal::face_geometry(tm, tm.points(), fim);
+  std::vector<std::array<double, 3>> points;
+  for(auto v : vertices(tm)) points.push_back({p3(tm, v)[0], p3(tm, v)[1], p3(tm, v)[2]});
+  // 0: the left, 1: the right, 2: the square [0.4, 0.6]^2 (4 % of the area)
+  std::vector<std::size_t> start(num_faces(tm));
+  for(auto f : faces(tm)) {
+    const auto& c = geo[fim[f]].centroid;
+    start[fim[f]] = (c[0] > 0.4 && c[0] < 0.6 && c[1] > 0.4 && c[1] < 0.6) ? 2 : c[0] < 0.5 ? 0 : 1;
+  }
+  auto seams_of = [&](const std::vector<std::size_t>& chart) {
+    std::vector<char> seam(num_halfedges(tm), 0);
+    for(auto h : halfedges(tm))
+      if(!is_border_edge(h, tm) && chart[fim[face(h, tm)]] != chart[fim[face(opposite(h, tm), tm)]]) seam[him[h]] = 1;
+    return seam;
+  };
+  typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
+  typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef std::function<bool(halfedge_descriptor)> Is_cut;
+  auto share = [&](std::vector<std::size_t>& chart, std::size_t& n,
+                   const std::function<bool(const std::vector<face_descriptor>&)>& accept) {
+    std::vector<char> seam = seams_of(chart);
+    const auto r = QD::internal::share_out_small_charts<CGAL::Sequential_tag>(
+        tm, fim, him, vim, points, geo,
+        [&](const std::vector<face_descriptor>& fs, const Is_cut&) { return accept(fs); }, chart, n, seam);
+    BOOST_TEST((seam == seams_of(chart)));  // the seams are the borders between the charts
+    return r;
+  };
+
+  // both neighbours accept: two charts, each with its half of the square
+  std::vector<std::size_t> chart = start;
+  std::size_t n = 3;
+  auto r = share(chart, n, [](const std::vector<face_descriptor>&) { return true; });
+  BOOST_TEST(r.first == 1u);
+  BOOST_TEST(r.second == 2u);
+  BOOST_REQUIRE(n == 2u);
+  std::set<std::size_t> taken;
+  for(auto f : faces(tm)) {
+    // renumbered by smallest face index: the left chart (face 0 is at the origin) is 0
+    const auto& c = geo[fim[f]].centroid;
+    if(start[fim[f]] != 2) BOOST_TEST(chart[fim[f]] == start[fim[f]]);
+    // each face of the square goes to the side it is nearer to
+    if(start[fim[f]] == 2) {
+      taken.insert(chart[fim[f]]);
+      if(std::abs(c[0] - 0.5) > 0.03) BOOST_TEST(chart[fim[f]] == (c[0] < 0.5 ? 0u : 1u));
+    }
+  }
+  BOOST_TEST(taken.size() == 2u);
+
+  // the right chart fails once it takes a face of the square: kept as it was
+  chart = start;
+  n = 3;
+  r = share(chart, n, [&](const std::vector<face_descriptor>& fs) {
+    return std::none_of(fs.begin(), fs.end(), [&](face_descriptor f) {
+      return start[fim[f]] == 2 && geo[fim[f]].centroid[0] > 0.5;
+    });
+  });
+  BOOST_TEST(r.first == 0u);
+  BOOST_TEST(r.second == 2u);
+  BOOST_TEST(n == 3u);
+  std::map<std::size_t, std::set<std::size_t>> renamed;  // each chart keeps its faces under one id
+  for(std::size_t i = 0; i < chart.size(); ++i) renamed[start[i]].insert(chart[i]);
+  BOOST_TEST(renamed.size() == 3u);
+  for(const auto& x : renamed) BOOST_TEST(x.second.size() == 1u);
+
+  // a chart above 5 % of the area is not tried
+  for(auto f : faces(tm)) {
+    const auto& c = geo[fim[f]].centroid;
+    start[fim[f]] = (c[0] > 0.35 && c[0] < 0.65 && c[1] > 0.35 && c[1] < 0.65) ? 2 : c[0] < 0.5 ? 0 : 1;
+  }
+  chart = start;
+  n = 3;
+  r = share(chart, n, [](const std::vector<face_descriptor>&) { return true; });
+  BOOST_TEST(r.second == 0u);
+  BOOST_TEST(n == 3u);
+}
+
 BOOST_AUTO_TEST_CASE(deterministic_and_parallel_equals_sequential)
 {
 #ifdef CGAL_QD_DEMO_MESH_DIR
@@ -781,6 +866,31 @@ BOOST_AUTO_TEST_CASE(segmentation_rejects_bad_input)
 }
 
 #ifdef CGAL_QD_DEMO_MESH_DIR
+// bunny00: the merging leaves a small piece between larger ones (1,189 faces
+// by the ear); the sharing gives it to its neighbours, and the segmentation
+// stays valid, one piece fewer
+BOOST_AUTO_TEST_CASE(bunny00_small_chart_shared_out)
+{
+  Surface_mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/bunny00.off", tm));
+  Chart_map<Surface_mesh> chart, kept;
+  const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  const auto r0 = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(kept),
+                                                QD::parameters::share_out_small_charts(false));
+  BOOST_REQUIRE(r);
+  BOOST_REQUIRE(r0);
+  BOOST_TEST_MESSAGE("bunny00: " << r0.number_of_charts << " pieces, " << r.number_of_charts << " with "
+                                 << r.merging.charts_shared_out << " shared out in " << r.merging.sharing_trials
+                                 << " trials");
+  BOOST_TEST(r0.merging.charts_shared_out == 0u);
+  BOOST_TEST(r0.merging.sharing_trials == 0u);
+  BOOST_TEST(r.merging.charts_shared_out >= 1u);
+  BOOST_TEST(r.number_of_charts + r.merging.charts_shared_out == r0.number_of_charts);
+  BOOST_TEST(r.merging.sharing_trials >= 2 * r.merging.charts_shared_out);
+  expect_valid_segmentation(tm, chart, r);
+  BOOST_TEST(r.seam_length < r0.seam_length);
+}
+
 BOOST_AUTO_TEST_CASE(real_meshes_segment_within_the_thresholds)
 {
   // the defaults (free-boundary ARAP trials, A_loc <= 2.5 %): fewer pieces than

@@ -51,6 +51,10 @@ struct Merging_result
   /// speculative trials whose result an earlier acceptance made stale
   std::size_t trials = 0;
   std::size_t merges = 0;           ///< accepted trials (curves removed)
+  /// small charts shared out among their neighbours after the merging
+  /// (`segment_quasi_developable()`, `CGAL_QD::parameters::share_out_small_charts`)
+  std::size_t charts_shared_out = 0;
+  std::size_t sharing_trials = 0;  ///< enlarged neighbours flattened and measured by the sharing
   /// flattenings of the splitting and the merging whose LPFB reached its
   /// iteration limit (`Error_code::NOT_CONVERGED`); such a chart is not
   /// accepted: a split goes on, a trial keeps its two charts

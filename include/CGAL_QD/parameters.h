@@ -26,6 +26,7 @@ struct refinement_band_width_t {};
 struct denoise_boundaries_t {};
 struct denoising_iterations_t {};
 struct merge_charts_t {};
+struct share_out_small_charts_t {};
 struct denoised_point_map_t {};
 struct overlap_tolerance_t {};
 struct merge_order_t {};
@@ -99,6 +100,14 @@ CGAL_QD_ADD_NAMED_PARAMETER(denoised_point_map)
 /// whether `segment_quasi_developable()` runs the boundary-based merging
 /// (step 4). Default: `true`.
 CGAL_QD_ADD_NAMED_PARAMETER(merge_charts)
+/// whether `segment_quasi_developable()`, after the merging, shares out every
+/// small chart (at most 5 % of the mesh's area) that can be shared among two
+/// or more of its neighbours: each neighbour takes the faces nearer to its
+/// side, and the sharing is kept only where every neighbour so enlarged passes
+/// the merging's trial and keeps 0.9 of its compactness. Default: `true`,
+/// except with `Chart_criterion::LPFB_IP`, which reproduces the paper's
+/// merging alone.
+CGAL_QD_ADD_NAMED_PARAMETER(share_out_small_charts)
 /// whether `segment_quasi_developable()` flattens the final charts (step 5).
 /// Default: `true`. With `false` the result holds the charts and the seams but
 /// no flattening (`Chart_flattening_result::flattened` is `false`):

@@ -16,6 +16,7 @@
 #include <CGAL_QD/chart_merging.h>
 #include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/internal/chart_evaluator.h>
+#include <CGAL_QD/internal/chart_sharing.h>
 #include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/segmentation_measures.h>
@@ -98,7 +99,9 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 /// 2. `refine_chart_boundaries()`: minimum-cut borders (named parameter `refine_boundaries`, default on);
 /// 3. `denoise_chart_boundaries()` on a copy of the points (`denoise_boundaries`, default off);
 /// 4. `merge_charts_by_boundaries()` (`merge_charts`, default on), which first splits the
-///    charts beyond the thresholds;
+///    charts beyond the thresholds; then every small chart that two or more of its neighbours
+///    can share is shared out among them (`share_out_small_charts`, default on but with the
+///    paper's criterion);
 /// 5. the LPFB+IP flattening of every final chart cut open along the seams, kept in
 ///    `Segmentation_result::corner_uv`.
 ///
@@ -119,8 +122,9 @@ inline bool all_finite(const std::vector<std::array<double, 2>>& uv)
 ///   `CGAL_QD::parameters::max_local_area_distortion`, `CGAL_QD::parameters::chart_criterion`,
 ///   `CGAL_QD::parameters::area_preservation`), the switches `CGAL_QD::parameters::refine_boundaries`,
 ///   `CGAL_QD::parameters::denoise_boundaries`, `CGAL_QD::parameters::merge_charts`,
+///   `CGAL_QD::parameters::share_out_small_charts`,
 ///   `CGAL_QD::parameters::denoised_point_map` (receives the denoised points), `callback` (called with a
-///   step name, "vsa", "refine", "denoise", "split", "merge" or "flatten", and the fraction done, always
+///   step name, "vsa", "refine", "denoise", "split", "merge", "share" or "flatten", and the fraction done, always
 ///   on the calling thread), `verbose`
 ///   (a line per step and per trial on `std::cerr`), and `vertex_point_map`, `vertex_index_map`,
 ///   `face_index_map`, `halfedge_index_map`.
@@ -228,11 +232,36 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   result.merging.lpfb_not_converged = evaluator.lpfb_not_converged();
   result.number_of_charts = result.merging.number_of_charts = merger.number_of_final_charts();
   result.merging.seam_length = merger.seams(std::back_inserter(result.merging.seam_edges));
+  if(merge && result.number_of_charts > 2 &&
+     choose_parameter(get_parameter(snp, internal_np::share_out_small_charts_t()),
+                      thresholds.criterion != Chart_criterion::LPFB_IP)) {
+    if(progress) progress("share", 0.);
+    std::vector<char> seam(num_halfedges(tm), 0);
+    for(edge_descriptor e : result.merging.seam_edges)
+      seam[get(him, halfedge(e, tm))] = seam[get(him, opposite(halfedge(e, tm), tm))] = 1;
+    std::size_t n = result.number_of_charts;
+    std::tie(result.merging.charts_shared_out, result.merging.sharing_trials) =
+        internal::share_out_small_charts<ConcurrencyTag>(
+            tm, fim, him, vim, result.points, geo,
+            [&](const std::vector<face_descriptor>& fs, const auto& is_cut) {
+              return evaluator.evaluate(fs, is_cut, nullptr, nullptr, nullptr, 1000., true, nullptr).accepted;
+            },
+            chart, n, seam);
+    if(result.merging.charts_shared_out > 0) {
+      result.number_of_charts = result.merging.number_of_charts = n;
+      result.merging.seam_edges.clear();
+      for(edge_descriptor e : edges(tm))
+        if(seam[get(him, halfedge(e, tm))]) result.merging.seam_edges.push_back(e);
+      result.merging.seam_length = internal::seam_length_of(tm, result.merging.seam_edges, result.points, vim);
+    }
+    if(progress) progress("share", 1.);
+  }
   result.merging.time_ms = result.time_merge_ms = internal::milliseconds_since(t);
   if(verbose)
     std::cerr << "merging: " << result.charts_before_merging << " charts (" << result.merging.charts_split
               << " from splitting) -> " << result.number_of_charts << ", " << result.merging.trials << " trials, "
-              << result.merging.merges << " merges in " << result.time_merge_ms << " ms\n";
+              << result.merging.merges << " merges, " << result.merging.charts_shared_out << " charts shared out ("
+              << result.merging.sharing_trials << " trials) in " << result.time_merge_ms << " ms\n";
 
   // 5. the flattening of every final chart (always for a scaled mesh: a
   // flattening of the charts made later would see the points in the units of
