@@ -44,7 +44,7 @@ inline constexpr double shared_chart_compactness_kept = 0.9;
 // border with each of them, along the distances between face centroids); a
 // neighbour whose enlarged chart fails the trial is left out and the others
 // share the chart again, while at least two remain. Once a chart is shared
-// out, the charts are visited again. Returns the number of charts shared
+// out, the charts next to the ones that took it are visited again. Returns the number of charts shared
 // out and the number of trials; `chart` (renumbered by smallest face index),
 // `n` and `seam` are updated.
 template <class ConcurrencyTag, class TriangleMesh, class FIM, class HIM, class VIM, class Evaluate>
@@ -219,7 +219,16 @@ std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& t
           members[c].clear();
           area[c] = perimeter[c] = 0;
           ++shared;
-          std::fill(tried.begin(), tried.end(), 0);  // the neighbours changed
+          // the takers and the charts next to them are tried again (a chart
+          // none of whose neighbours changed would fail as it did)
+          for(std::size_t k : takers) {
+            tried[k] = 0;
+            for(std::size_t i : members[k])
+              for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm)) {
+                const long j = face_across(h);
+                if(j >= 0) tried[chart[std::size_t(j)]] = 0;
+              }
+          }
           done = true;
           break;
         }
