@@ -392,12 +392,6 @@ private:
     return {m_area[r1] + m_area[r2], m_perimeter[r1] + m_perimeter[r2] - 2 * m_curves[c].length};
   }
 
-  // compactness 4 pi A / P^2 of a chart of area `area` and perimeter `perimeter` (1 without perimeter)
-  static double compactness(double area, double perimeter)
-  {
-    return perimeter > 0 ? 4 * 3.14159265358979323846 * area / (perimeter * perimeter) : 1.;
-  }
-
   double key(std::size_t c) const
   {
     const std::pair<double, double> merged = merged_chart(c);
@@ -405,7 +399,7 @@ private:
     switch(m_order) {
     case Merge_order::SMALLEST_AREA_FIRST: return -area;
     case Merge_order::LONGEST_RELATIVE_CURVE_FIRST: return m_curves[c].length / std::sqrt(area);
-    case Merge_order::MOST_COMPACT_FIRST: return merged.second > 0 ? compactness(area, merged.second) : 0.;
+    case Merge_order::MOST_COMPACT_FIRST: return merged.second > 0 ? compactness_of(area, merged.second) : 0.;
     default: return area;
     }
   }
@@ -418,9 +412,9 @@ private:
     const std::size_t r1 = find(m_curves[c].a), r2 = find(m_curves[c].b);
     if(r1 == r2 || !(m_compactness_ratio > 0)) return true;
     const std::pair<double, double> merged = merged_chart(c);
-    return compactness(merged.first, merged.second) >=
-           m_compactness_ratio * (std::min)(compactness(m_area[r1], m_perimeter[r1]),
-                                            compactness(m_area[r2], m_perimeter[r2]));
+    return compactness_of(merged.first, merged.second) >=
+           m_compactness_ratio * (std::min)(compactness_of(m_area[r1], m_perimeter[r1]),
+                                            compactness_of(m_area[r2], m_perimeter[r2]));
   }
 
   // what the trial of curve `c` needs of the merging's state, taken while no

@@ -10,7 +10,6 @@
 // merging's trial and stays nearly as compact as it was.
 
 #include <CGAL_QD/internal/charts.h>
-#include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/parallel.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -44,14 +43,16 @@ inline constexpr double shared_chart_compactness_kept = 0.9;
 // border with each of them, along the distances between face centroids); a
 // neighbour whose enlarged chart fails the trial is left out and the others
 // share the chart again, while at least two remain. Once a chart is shared
-// out, the charts next to the ones that took it are visited again. Returns the number of charts shared
-// out and the number of trials; `chart` (renumbered by smallest face index),
-// `n` and `seam` are updated.
+// out, the charts that took it and their neighbours are visited again.
+// Returns the number of charts shared out and the number of trials; `chart`
+// (renumbered by smallest face index), `n` and `seam` are updated.
 template <class ConcurrencyTag, class TriangleMesh, class FIM, class HIM, class VIM, class Evaluate>
-std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& tm, const FIM& fim, const HIM& him, const VIM& vim,
-                                   const std::vector<std::array<double, 3>>& points,
-                                   const std::vector<Face_geometry>& geo, const Evaluate& evaluate,
-                                   std::vector<std::size_t>& chart, std::size_t& n, std::vector<char>& seam)
+std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& tm, const FIM& fim, const HIM& him,
+                                                           const VIM& vim,
+                                                           const std::vector<std::array<double, 3>>& points,
+                                                           const std::vector<Face_geometry>& geo,
+                                                           const Evaluate& evaluate, std::vector<std::size_t>& chart,
+                                                           std::size_t& n, std::vector<char>& seam)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::face_descriptor face_descriptor;
@@ -60,16 +61,9 @@ std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& t
   std::vector<face_descriptor> face_of(nf);
   for(face_descriptor f : faces(tm)) face_of[get(fim, f)] = f;
   auto length = [&](halfedge_descriptor h) {
-    const std::array<double, 3>&p = points[get(vim, source(h, tm))], &q = points[get(vim, target(h, tm))];
-    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    return distance3(points[get(vim, source(h, tm))], points[get(vim, target(h, tm))]);
   };
-  auto centroid_distance = [&](std::size_t i, std::size_t j) {
-    const std::array<double, 3>&p = geo[i].centroid, &q = geo[j].centroid;
-    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-  };
-  auto compactness = [](double area, double perimeter) {
-    return perimeter > 0 ? 4 * pi * area / (perimeter * perimeter) : 1.;
-  };
+  auto centroid_distance = [&](std::size_t i, std::size_t j) { return distance3(geo[i].centroid, geo[j].centroid); };
   auto face_across = [&](halfedge_descriptor h) -> long {
     const halfedge_descriptor o = opposite(h, tm);
     return is_border(o, tm) ? -1 : static_cast<long>(get(fim, face(o, tm)));
@@ -174,12 +168,16 @@ std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& t
         }
         bool compact = true;
         for(std::size_t k : takers)
-          compact = compact && compactness(grown[k].first, grown[k].second) >=
-                                   shared_chart_compactness_kept * compactness(area[k], perimeter[k]);
-        if(!compact) {
+          compact = compact && compactness_of(grown[k].first, grown[k].second) >=
+                                   shared_chart_compactness_kept * compactness_of(area[k], perimeter[k]);
+        // the cut flags as in `seam` again
+        auto drop_pending = [&] {
           for(std::size_t i : fs)
             for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm))
               pending[get(him, h)] = pending[get(him, opposite(h, tm))] = -1;
+        };
+        if(!compact) {
+          drop_pending();
           break;
         }
         // every enlarged neighbour tried
@@ -204,11 +202,11 @@ std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& t
             const std::size_t k = new_chart(i);
             members[k].push_back(i);
             for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm)) {
-              const std::size_t hi = get(him, h), oi = get(him, opposite(h, tm));
-              if(pending[hi] >= 0) seam[hi] = seam[oi] = static_cast<char>(pending[hi]);
-              pending[hi] = pending[oi] = -1;
+              const std::size_t hi = get(him, h);
+              if(pending[hi] >= 0) seam[hi] = seam[get(him, opposite(h, tm))] = static_cast<char>(pending[hi]);
             }
           }
+          drop_pending();
           for(std::size_t t = 0; t < takers.size(); ++t) {
             const std::size_t k = takers[t];
             std::sort(members[k].begin(), members[k].end());
@@ -232,9 +230,7 @@ std::pair<std::size_t, std::size_t> share_out_small_charts(const TriangleMesh& t
           done = true;
           break;
         }
-        for(std::size_t i : fs)
-          for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm))
-            pending[get(him, h)] = pending[get(him, opposite(h, tm))] = -1;
+        drop_pending();
         for(std::size_t t = 0; t < takers.size(); ++t)
           if(!ok[t]) left_out[takers[t]] = 1;
       }

@@ -60,6 +60,12 @@ std::vector<std::array<std::size_t, 3>> face_neighbours(const TriangleMesh& tm, 
   return next_to;
 }
 
+// compactness 4 pi A / P^2 of a chart of area `area` and perimeter `perimeter` (1 without perimeter)
+inline double compactness_of(double area, double perimeter)
+{
+  return perimeter > 0 ? 4 * 3.14159265358979323846 * area / (perimeter * perimeter) : 1.;
+}
+
 // Per-face unit normal, area and centroid.
 struct Face_geometry
 {
