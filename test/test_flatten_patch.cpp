@@ -303,6 +303,68 @@ BOOST_AUTO_TEST_CASE(simplicial_ldlt_solves_columns_as_eigen_does)
   }
 }
 
+// Simplicial_LDLT_solvers sharing an Ordering_cache: a pattern met again
+// takes its ordering from the cache, and the solution is the same to the last
+// bit as without it; another pattern is ordered again; beyond its budget the
+// cache drops the ordering used least recently
+BOOST_AUTO_TEST_CASE(ordering_cache_gives_the_same_factorisation)
+{
+  // a grid Laplacian plus a diagonal, with values that depend on `seed`, and
+  // optionally one more coupling (another pattern)
+  const int k = 15, n = k * k;
+  auto matrix = [&](int seed, bool extra) {
+    std::vector<Eigen::Triplet<double>> t;
+    std::vector<double> d(n, 1. + 0.1 * seed);
+    auto couple = [&](int a, int b, double w) {
+      t.emplace_back((std::max)(a, b), (std::min)(a, b), -w);
+      d[a] += w;
+      d[b] += w;
+    };
+    for(int i = 0; i < k; ++i)
+      for(int j = 0; j < k; ++j) {
+        if(j + 1 < k) couple(i * k + j, i * k + j + 1, 0.5 + 0.1 * ((i + j + seed) % 4));
+        if(i + 1 < k) couple(i * k + j, (i + 1) * k + j, 0.7 + 0.1 * ((i * j + seed) % 3));
+      }
+    if(extra) couple(0, n - 1, 0.4);
+    for(int r = 0; r < n; ++r) t.emplace_back(r, r, d[r]);
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+  };
+  Eigen::MatrixXd B(n, 2);
+  for(int r = 0; r < n; ++r) B.row(r) << std::sin(0.3 * r), std::cos(0.2 * r);
+  auto solve = [&](QD::Simplicial_LDLT_solver& s, const Eigen::SparseMatrix<double>& A) {
+    Eigen::MatrixXd X;
+    BOOST_REQUIRE(s.factorize(A));
+    BOOST_REQUIRE(s.solve(B, X));
+    return X;
+  };
+  const auto cache = std::make_shared<QD::Ordering_cache>();
+  QD::Simplicial_LDLT_solver plain, cached(cache);
+  const QD::Simplicial_LDLT_solver copy = cached;  // shares the cache
+  for(int seed = 0; seed < 3; ++seed) {
+    const Eigen::SparseMatrix<double> A = matrix(seed, false);
+    const Eigen::MatrixXd X = solve(plain, A);
+    QD::Simplicial_LDLT_solver other = seed == 2 ? copy : cached;
+    BOOST_TEST((solve(other, A).array() == X.array()).all());
+    BOOST_TEST((A.selfadjointView<Eigen::Lower>() * X - B).norm() < 1e-10 * B.norm());
+  }
+  BOOST_TEST(cache->misses() == 1u);
+  BOOST_TEST(cache->hits() == 2u);
+  const Eigen::SparseMatrix<double> E = matrix(1, true);
+  BOOST_TEST((solve(cached, E).array() == solve(plain, E).array()).all());
+  BOOST_TEST(cache->misses() == 2u);
+  // room for one permutation only: the second pattern pushed the first out
+  const auto small = std::make_shared<QD::Ordering_cache>(sizeof(int) * std::size_t(n));
+  QD::Simplicial_LDLT_solver one(small);
+  solve(one, matrix(0, false));
+  solve(one, E);
+  solve(one, E);
+  BOOST_TEST(small->hits() == 1u);
+  solve(one, matrix(0, false));
+  BOOST_TEST(small->misses() == 3u);
+}
+
 // with the default solver, and with one that analyses every system ahead on a
 // second thread (which then runs on the bad mesh too)
 BOOST_AUTO_TEST_CASE_TEMPLATE(bad_input_writes_nothing, Mesh, Mesh_types)

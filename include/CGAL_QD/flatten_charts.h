@@ -33,6 +33,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -134,7 +135,8 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
                           const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
                           const Merge_thresholds& thresholds, const std::function<void(const char*, double)>& progress,
                           Chart_flattening_result<TriangleMesh>& result,
-                          Flattening_cache<Chart_report>* cache = nullptr, bool fit_only_if_accepted = false)
+                          Flattening_cache<Chart_report>* cache = nullptr, bool fit_only_if_accepted = false,
+                          std::shared_ptr<Ordering_cache> orderings = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -171,7 +173,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     if(!hs.empty()) curves.push_back(hs);
   }
 
-  Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, thresholds);
+  Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, thresholds, std::move(orderings));
   evaluator.set_cache(cache);
   std::vector<std::vector<face_descriptor>> members(n);
   for(face_descriptor f : faces(tm)) members[chart[get(fim, f)]].push_back(f);
@@ -399,13 +401,15 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   if(progress) progress("flatten", 1.);
 }
 
-// `flatten_charts()`, with flattenings looked up in `cache` (nullptr: none);
-// with `fit_only_if_accepted`, the seams are not fitted where a chart is rejected
+// `flatten_charts()`, with flattenings looked up in `cache` (nullptr: none)
+// and orderings in `orderings` (nullptr: a cache of its own); with
+// `fit_only_if_accepted`, the seams are not fitted where a chart is rejected
 template <class ConcurrencyTag, class TriangleMesh, class FaceChartMap, class NamedParameters>
 Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm, const FaceChartMap& face_chart,
                                                           const NamedParameters& np,
                                                           Flattening_cache<Chart_report>* cache,
-                                                          bool fit_only_if_accepted = false)
+                                                          bool fit_only_if_accepted = false,
+                                                          std::shared_ptr<Ordering_cache> orderings = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -439,7 +443,7 @@ Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm
   result.points = points_by_index(tm, vpm, vim);
   flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams,
                                        merge_thresholds_from<TriangleMesh>(np), progress, result, cache,
-                                       fit_only_if_accepted);
+                                       fit_only_if_accepted, std::move(orderings));
   return result;
 }
 

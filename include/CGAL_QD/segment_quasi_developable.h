@@ -267,8 +267,11 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   // flattening of the charts made later would see the points in the units of
   // the mesh)
   if(choose_parameter(get_parameter(snp, internal_np::final_flattening_t()), true) || scale != 1.) {
+    // with the merging's orderings: a chart made by a merging trial is
+    // flattened again with the same pattern
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, result.number_of_charts,
-                                                   result.merging.seam_edges, thresholds, progress, result);
+                                                   result.merging.seam_edges, thresholds, progress, result,
+                                                   nullptr, false, evaluator.orderings());
   } else {
     result.flattened = false;
     result.number_of_faces = nf;

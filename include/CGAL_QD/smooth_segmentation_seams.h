@@ -243,8 +243,10 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     }
   };
 
-  // the charts that a try leaves as they were flatten as they did at the try before
+  // the charts that a try leaves as they were flatten as they did at the try
+  // before; a chart smoothed as at an earlier try takes the orderings found then
   internal::Flattening_cache<Chart_report> cache;
+  const auto orderings = std::make_shared<Ordering_cache>();
   // the try kept (every chart accepted, the most seams matched): its
   // flattening, and its levels; its mesh while no later try is made (a later
   // try frees it, and it is made again from its levels at the end: two
@@ -395,7 +397,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
                                                       CGAL::parameters::edge_is_constrained_map(cut)))))));
     cache.next_generation();
     Chart_flattening_result<TriangleMesh> f =
-        internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache, true);
+        internal::flatten_charts_impl<ConcurrencyTag>(mesh, chart, fnp, &cache, true, orderings);
     ++result.tries;
     if(!f || f.number_of_charts != segmentation.number_of_charts) break;
     if(!have_best) result.rejected_charts = f.rejected_charts;

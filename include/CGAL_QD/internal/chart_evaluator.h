@@ -66,10 +66,16 @@ public:
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
+  // `orderings`: the ordering cache of its factorisations, shared with
+  // other evaluators of the same charts (nullptr: one of its own)
   Chart_evaluator(const TriangleMesh& tm, const FIM& fim, const VIM& vim,
-                  const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds)
-      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds), m_corners(tm, fim)
+                  const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds,
+                  std::shared_ptr<Ordering_cache> orderings = nullptr)
+      : m_tm(tm), m_fim(fim), m_vim(vim), m_points(points), m_thresholds(thresholds), m_corners(tm, fim),
+        m_orderings(orderings ? std::move(orderings) : std::make_shared<Ordering_cache>())
   {}
+
+  const std::shared_ptr<Ordering_cache>& orderings() const { return m_orderings; }
 
   // evaluations whose LPFB reached its iteration limit
   std::size_t lpfb_not_converged() const { return m_not_converged.load(); }
@@ -220,13 +226,13 @@ private:
       auto pull = [&](double weight) {
         const Optimization_result o = optimize_flattening(
             sm, uv,
-            parameters::arap_border(
+            parameters::sparse_solver(solver(), parameters::arap_border(
                 Arap_border::KEEP_LENGTHS,
                 parameters::border_edge_length_map(
                     goal, parameters::border_length_weight(
                               weight, parameters::area_preservation(
                                           m_thresholds.area_preservation,
-                                          parameters::anderson_acceleration(seam_pull_anderson_window))))));
+                                          parameters::anderson_acceleration(seam_pull_anderson_window)))))));
         if(o && measure(sm, uv, rep)) {
           rep.optimized = true;
           write_corner_uv();
@@ -244,11 +250,12 @@ private:
       for(auto v : vertices(sm)) put(exact, v, get(uv, v));
       const Optimization_result e = optimize_flattening(
           sm, exact,
-          parameters::arap_border(
-              Arap_border::LENGTH_PRESERVED,
-              parameters::number_of_free_iterations(
-                  0, parameters::border_edge_length_map(
-                         goal, parameters::area_preservation(m_thresholds.area_preservation)))));
+          parameters::sparse_solver(
+              solver(), parameters::arap_border(
+                            Arap_border::LENGTH_PRESERVED,
+                            parameters::number_of_free_iterations(
+                                0, parameters::border_edge_length_map(
+                                       goal, parameters::area_preservation(m_thresholds.area_preservation))))));
       Chart_report exact_rep = rep;
       if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
         exact_rep.optimized = exact_rep.lengths_matched = true;
@@ -264,7 +271,7 @@ private:
     // parallel loops, where BLAS threads and the analysis thread of the
     // supernodal path would compete with them (bunny00 subdivided twice,
     // 1.2M faces: merging 56.4 s with SimplicialLDLT, 67.5 s with the default)
-    const Flattening_result flat = flatten_patch(sm, uv, parameters::sparse_solver(Simplicial_LDLT_solver()));
+    const Flattening_result flat = flatten_patch(sm, uv, parameters::sparse_solver(solver()));
     rep.number_of_border_loops = flat.border.number_of_loops;
     if(!flat) {
       rep.status = flat.status;
@@ -400,13 +407,17 @@ private:
   // preservation or the one given
   auto trial_parameters(double area_preservation = -1.) const
   {
-    return parameters::arap_border(
-        m_thresholds.arap_border,
-        parameters::border_length_weight(
-            m_thresholds.border_length_weight,
-            parameters::area_preservation(area_preservation < 0 ? m_thresholds.area_preservation
-                                                                : area_preservation)));
+    return parameters::sparse_solver(
+        solver(), parameters::arap_border(
+                      m_thresholds.arap_border,
+                      parameters::border_length_weight(
+                          m_thresholds.border_length_weight,
+                          parameters::area_preservation(area_preservation < 0 ? m_thresholds.area_preservation
+                                                                              : area_preservation))));
   }
+
+  // the solver of every flattening, with the evaluator's orderings
+  Simplicial_LDLT_solver solver() const { return Simplicial_LDLT_solver(m_orderings); }
 
   // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
   template <class UVMap>
@@ -448,6 +459,10 @@ private:
   mutable std::mutex m_scratch_mutex;
   mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
   Flattening_cache<Chart_report>* m_cache = nullptr;
+  // the orderings of the patterns factorised by its flattenings: a chart
+  // flattened again (the final flattening of a chart its last merging trial
+  // made, the fits of its seams) takes its ordering from there
+  std::shared_ptr<Ordering_cache> m_orderings;
 };
 
 } // namespace internal

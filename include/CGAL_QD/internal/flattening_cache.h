@@ -11,6 +11,8 @@
 // start of a fit, and the thresholds; the cache keys it by a 128-bit digest
 // of all of them.
 
+#include <CGAL_QD/internal/digest.h>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -22,45 +24,6 @@
 
 namespace CGAL_QD {
 namespace internal {
-
-// Two independent 64-bit digests of a byte stream: FNV-1a, and a
-// multiply-rotate mix of 8-byte words.
-class Digest
-{
-public:
-  void add(const void* data, std::size_t bytes)
-  {
-    const unsigned char* p = static_cast<const unsigned char*>(data);
-    for(std::size_t i = 0; i < bytes; ++i) {
-      m_fnv = (m_fnv ^ p[i]) * 0x100000001b3ull;
-      m_word |= std::uint64_t(p[i]) << (8 * m_fill);
-      if(++m_fill == 8) flush();
-    }
-  }
-  template <class T>
-  void add_vector(const std::vector<T>& v)
-  {
-    const std::uint64_t n = v.size();
-    add(&n, sizeof(n));
-    if(!v.empty()) add(v.data(), v.size() * sizeof(T));
-  }
-  std::pair<std::uint64_t, std::uint64_t> value()
-  {
-    if(m_fill > 0) flush();
-    return {m_fnv, m_mix ^ (m_mix >> 29)};
-  }
-
-private:
-  void flush()
-  {
-    m_mix ^= m_word * 0x9e3779b97f4a7c15ull;
-    m_mix = ((m_mix << 27) | (m_mix >> 37)) * 0xbf58476d1ce4e5b9ull + 0x94d049bb133111ebull;
-    m_word = 0;
-    m_fill = 0;
-  }
-  std::uint64_t m_fnv = 0xcbf29ce484222325ull, m_mix = 0x6a09e667f3bcc908ull, m_word = 0;
-  int m_fill = 0;
-};
 
 // Thread-safe. An entry is dropped when a generation goes by without it
 // being stored or found, so the cache holds about two tries' flattenings.
