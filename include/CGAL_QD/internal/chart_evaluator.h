@@ -226,13 +226,15 @@ private:
       auto pull = [&](double weight) {
         const Optimization_result o = optimize_flattening(
             sm, uv,
-            parameters::sparse_solver(solver(), parameters::arap_border(
-                Arap_border::KEEP_LENGTHS,
-                parameters::border_edge_length_map(
-                    goal, parameters::border_length_weight(
-                              weight, parameters::area_preservation(
-                                          m_thresholds.area_preservation,
-                                          parameters::anderson_acceleration(seam_pull_anderson_window)))))));
+            parameters::sparse_solver(
+                solver(),
+                parameters::arap_border(
+                    Arap_border::KEEP_LENGTHS,
+                    parameters::border_edge_length_map(
+                        goal, parameters::border_length_weight(
+                                  weight, parameters::area_preservation(
+                                              m_thresholds.area_preservation,
+                                              parameters::anderson_acceleration(seam_pull_anderson_window)))))));
         if(o && measure(sm, uv, rep)) {
           rep.optimized = true;
           write_corner_uv();
