@@ -1888,6 +1888,53 @@ BOOST_AUTO_TEST_CASE(cached_flattenings_are_the_flattenings)
   BOOST_TEST(cache.hits() < 2 * stored);
 }
 
+BOOST_AUTO_TEST_CASE(rejected_trial_reports_its_optimised_map)
+{
+  // a merging trial that rejects a chart after optimising its flattening
+  // reports the optimised map, the one it judged, not LPFB+IP's; a trial that
+  // gives its optimisation up says after how many iterations
+  auto trial = [](const Surface_mesh& tm, double max_local_area_distortion) {
+    const auto fim = CGAL::get_initialized_face_index_map(tm);
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    std::vector<std::array<double, 3>> points(num_vertices(tm));
+    for(auto v : vertices(tm)) {
+      const auto& p = tm.point(v);
+      points[get(vim, v)] = {p.x(), p.y(), p.z()};
+    }
+    QD::internal::Merge_thresholds thresholds;
+    thresholds.max_local_area_distortion = max_local_area_distortion;
+    const QD::internal::Chart_evaluator<Surface_mesh, decltype(fim), decltype(vim)> evaluator(tm, fim, vim, points,
+                                                                                              thresholds);
+    const std::vector<Surface_mesh::Face_index> fs(faces(tm).begin(), faces(tm).end());
+    return evaluator.evaluate(fs, [](Surface_mesh::Halfedge_index) { return false; });
+  };
+  // a cap that LPFB+IP flattens beyond A_loc 2.5 % and ARAP within it
+  const Surface_mesh cap = make<Surface_mesh>(polar(8, 32, sphere_cap(0.6)));
+  const QD::Chart_report passed = trial(cap, 0.025);
+  BOOST_TEST(passed.accepted);
+  BOOST_TEST(passed.optimized);
+  BOOST_TEST(passed.given_up_after == 0u);
+  BOOST_REQUIRE(passed.local_area_distortion > 0.5);
+  // the same trial with the bound just below the A_loc of its optimised map
+  const QD::Chart_report rejected = trial(cap, passed.local_area_distortion / 101.);
+  BOOST_TEST(!rejected.accepted);
+  BOOST_TEST(rejected.status == QD::Error_code::OK);
+  BOOST_TEST(rejected.optimized);
+  BOOST_TEST(rejected.given_up_after == 0u);
+  BOOST_TEST(rejected.local_area_distortion == passed.local_area_distortion);  // the same map
+  BOOST_TEST(rejected.area_distortion == passed.area_distortion);
+  BOOST_TEST(rejected.l2_stretch == passed.l2_stretch);
+  BOOST_TEST(!rejected.overlap);
+  // a hemisphere: far beyond the bound after the first 5 iterations
+  const QD::Chart_report hopeless = trial(make<Surface_mesh>(polar(8, 32, sphere_cap(0.5 * CGAL_PI))), 0.025);
+  BOOST_TEST(!hopeless.accepted);
+  BOOST_TEST(hopeless.optimized);
+  BOOST_TEST(hopeless.given_up_after == 5u);
+  BOOST_TEST(hopeless.local_area_distortion > 2.5 * std::pow(30. / 5., 0.6));
+  BOOST_TEST(hopeless.area_distortion > 0.);
+  BOOST_TEST(hopeless.l2_stretch == 0.);  // not measured
+}
+
 BOOST_AUTO_TEST_CASE(flatten_charts_gives_both_sides_of_a_seam_the_same_length)
 {
   // a curved patch in two charts: the free flattenings give the two sides of

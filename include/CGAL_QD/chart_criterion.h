@@ -62,8 +62,14 @@ struct Chart_report
   /// seams' common lengths differ from the 3D ones)
   double max_border_length_error = 0;
   bool overlap = false;                    ///< S(Omega): a flipped face, a branch vertex or a border crossing
-  /// whether the flattening is the optimised one (`Chart_criterion::LPFB_IP_THEN_ARAP`), not LPFB+IP
+  /// whether the flattening is the optimised one (`Chart_criterion::LPFB_IP_THEN_ARAP`), not LPFB+IP; in
+  /// a rejected merging trial, whether the measures are those of its optimised map, the last it judged
   bool optimized = false;
+  /// a merging trial that gave its optimisation up, its A_loc too far above the bound to come below it
+  /// within the trial's iterations: after how many iterations (0: it did not). `area_distortion` and
+  /// `local_area_distortion` are then those of its map at that point; `l2_stretch` (0) and `overlap`
+  /// (false) are not measured
+  std::size_t given_up_after = 0;
   /// whether every border edge has exactly (up to the border solver's tolerance) its share of the
   /// length common to the two sides of its seam (the final flattening with
   /// `Chart_criterion::LPFB_IP_THEN_ARAP`); LPFB+IP gives them their 3D lengths

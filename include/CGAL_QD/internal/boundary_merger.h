@@ -262,10 +262,20 @@ public:
         const std::size_t c = window.front();
         window.pop_front();
         const Chart_report& rep = cache[c].report;
-        if(verbose)
+        if(verbose) {
           std::cerr << "  curve " << c << " between charts " << find(m_curves[c].a) << " and " << find(m_curves[c].b)
-                    << ": " << (rep.accepted ? "merged" : "kept") << " (" << error_message(rep.status) << ", A "
-                    << rep.area_distortion << " %, L2 " << rep.l2_stretch << (rep.overlap ? ", overlap" : "") << ")\n";
+                    << ": " << (rep.accepted ? "merged" : "kept") << " (";
+          if(rep.status != Error_code::OK)
+            std::cerr << error_message(rep.status);
+          else if(rep.given_up_after > 0)
+            std::cerr << "ARAP given up after " << rep.given_up_after << " iterations, A_loc "
+                      << rep.local_area_distortion << " %";
+          else
+            std::cerr << (rep.optimized ? "ARAP" : "LPFB+IP") << ": A " << rep.area_distortion << " %, L2 "
+                      << rep.l2_stretch << ", A_loc " << rep.local_area_distortion << " %"
+                      << (rep.overlap ? ", overlap" : "");
+          std::cerr << ")\n";
+        }
         ++decided;
         if(!rep.accepted) {
           m_curves[c].active = false;

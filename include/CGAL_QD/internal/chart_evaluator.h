@@ -284,13 +284,17 @@ private:
     const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
     // an optimised flattening `map` replaces the flattening of `rep` when it is
     // accepted and that one is not, or when both are and it has less local
-    // area distortion
+    // area distortion; a trial that rejects both reports the optimised map,
+    // the last it judged
     auto better = [&](const auto& map, const Optimization_result& r) {
       Chart_report candidate = rep;
-      if(!r || !measure(sm, map, candidate) || !candidate.accepted ||
-         (rep.accepted && !(candidate.local_area_distortion < rep.local_area_distortion)))
-        return false;
+      if(!r || !measure(sm, map, candidate)) return false;
       candidate.optimized = true;
+      if(!candidate.accepted) {
+        if(!corner_uv && !rep.accepted) rep = candidate;
+        return false;
+      }
+      if(rep.accepted && !(candidate.local_area_distortion < rep.local_area_distortion)) return false;
       rep = candidate;
       return true;
     };
@@ -318,7 +322,17 @@ private:
         o = optimize_flattening(sm, opt, parameters::iteration_callback([&](std::size_t iterations) {
           return stopped(stop) || hopeless(opt, iterations);
         }, trial_parameters()));
-        if(o.stopped_by_callback) return rep;  // rejected
+        if(o.stopped_by_callback) {  // rejected
+          if(!stopped(stop)) {
+            rep.optimized = true;
+            rep.given_up_after = o.iterations;
+            rep.area_distortion = hopeless.area_distortion();
+            rep.local_area_distortion = hopeless.local_area_distortion();
+            rep.l2_stretch = rep.max_border_length_error = 0;
+            rep.overlap = false;
+          }
+          return rep;
+        }
       }
       last = opt;
       capped = o && o.iterations == 30;

@@ -44,17 +44,24 @@ public:
   bool operator()(const UVMap& uv, std::size_t iterations) const
   {
     if(iterations % 5 != 0 || iterations >= m_cap || !(m_total > 0)) return false;
-    double local = 0;
+    double local = 0, area2 = 0;
     std::size_t i = 0;
     for(auto f : faces(m_sm)) {
       const auto h = halfedge(f, m_sm);
       const auto &a = get(uv, source(h, m_sm)), &b = get(uv, target(h, m_sm)),
                  &c = get(uv, target(next(h, m_sm), m_sm));
-      const double a2 = 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
-      local += std::abs(std::abs(a2) - m_area[i++]);
+      const double a2 = std::abs(0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y())));
+      local += std::abs(a2 - m_area[i++]);
+      area2 += a2;
     }
-    return local / m_total * 100. > m_max_local * std::pow(double(m_cap) / double(iterations), 0.6);
+    m_local_area_distortion = local / m_total * 100.;
+    m_area_distortion = std::abs(area2 - m_total) / m_total * 100.;
+    return m_local_area_distortion > m_max_local * std::pow(double(m_cap) / double(iterations), 0.6);
   }
+
+  // A_loc and A(Omega), in percent, of the map last looked at
+  double local_area_distortion() const { return m_local_area_distortion; }
+  double area_distortion() const { return m_area_distortion; }
 
 private:
   std::array<double, 3> point(typename Mesh::Vertex_index v) const
@@ -68,6 +75,7 @@ private:
   double m_max_local;          // in percent
   std::vector<double> m_area;  // 3D area by face
   double m_total = 0;
+  mutable double m_local_area_distortion = 0, m_area_distortion = 0;
 };
 
 } // namespace internal
