@@ -1896,11 +1896,7 @@ BOOST_AUTO_TEST_CASE(rejected_trial_reports_its_optimised_map)
   auto trial = [](const Surface_mesh& tm, double max_local_area_distortion) {
     const auto fim = CGAL::get_initialized_face_index_map(tm);
     const auto vim = CGAL::get_initialized_vertex_index_map(tm);
-    std::vector<std::array<double, 3>> points(num_vertices(tm));
-    for(auto v : vertices(tm)) {
-      const auto& p = tm.point(v);
-      points[get(vim, v)] = {p.x(), p.y(), p.z()};
-    }
+    const std::vector<std::array<double, 3>> points = QD::internal::points_by_index(tm, get(CGAL::vertex_point, tm), vim);
     QD::internal::Merge_thresholds thresholds;
     thresholds.max_local_area_distortion = max_local_area_distortion;
     const QD::internal::Chart_evaluator<Surface_mesh, decltype(fim), decltype(vim)> evaluator(tm, fim, vim, points,
