@@ -1931,6 +1931,57 @@ BOOST_AUTO_TEST_CASE(rejected_trial_reports_its_optimised_map)
   BOOST_TEST(hopeless.l2_stretch == 0.);  // not measured
 }
 
+BOOST_AUTO_TEST_CASE(flatten_charts_keeps_the_flattening_nearest_the_thresholds)
+{
+  // a chart that no flattening brings within the thresholds keeps the one
+  // nearest them, and reports its measures: here an optimised map, far
+  // nearer than LPFB+IP's
+  Surface_mesh cap = make<Surface_mesh>(polar(8, 32, sphere_cap(0.6)));
+  Face_map<Surface_mesh> chart;
+  for(auto f : faces(cap)) chart[f] = 0;
+  auto flatten = [&](double max_local_area_distortion) {
+    return QD::flatten_charts(cap, boost::make_assoc_property_map(chart),
+                              QD::parameters::max_local_area_distortion(max_local_area_distortion));
+  };
+  const QD::Chart_flattening_result<Surface_mesh> passed = flatten(0.025);
+  BOOST_REQUIRE(passed);
+  BOOST_REQUIRE(passed.charts[0].accepted);
+  BOOST_REQUIRE(passed.charts[0].optimized);
+  const double best = passed.charts[0].local_area_distortion;
+  BOOST_REQUIRE(best > 0.5);
+  const QD::Chart_flattening_result<Surface_mesh> paper = QD::flatten_charts(
+      cap, boost::make_assoc_property_map(chart), QD::parameters::chart_criterion(QD::Chart_criterion::LPFB_IP));
+  BOOST_REQUIRE(paper);
+  BOOST_REQUIRE(paper.charts[0].local_area_distortion > 2.5);  // LPFB+IP's map
+  // the bound just below the A_loc of the accepted map: every map is rejected
+  const QD::Chart_flattening_result<Surface_mesh> rejected = flatten(best / 101.);
+  BOOST_REQUIRE(rejected);
+  BOOST_TEST(rejected.rejected_charts == 1u);
+  const QD::Chart_report& r = rejected.charts[0];
+  BOOST_TEST(!r.accepted);
+  BOOST_TEST(r.optimized);
+  BOOST_TEST(!r.overlap);
+  // the optimisation from the same start, without the fit to the seam
+  // lengths (factors of one here) that the accepted map had
+  BOOST_TEST(r.local_area_distortion < 1.001 * best);
+  BOOST_TEST(r.local_area_distortion < paper.charts[0].local_area_distortion / 2.);
+  // the corners' UVs are the map measured
+  const auto fim = CGAL::get_initialized_face_index_map(cap);
+  auto uv = cap.add_property_map<Surface_mesh::Vertex_index, Epick::Point_2>("v:uv").first;
+  for(auto f : faces(cap)) {
+    std::size_t k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, cap), cap)) {
+      const std::array<double, 2>& p = rejected.corner_uv[3 * get(fim, f) + k++];
+      put(uv, target(h, cap), Epick::Point_2(p[0], p[1]));
+    }
+  }
+  const auto d = QD::compute_distortion(cap, uv);
+  BOOST_REQUIRE(d);
+  BOOST_TEST(std::abs(d.local_area_distortion - r.local_area_distortion) <= 1e-9 * r.local_area_distortion);
+  BOOST_TEST(std::abs(d.area_distortion - r.area_distortion) <= 1e-9 * (1. + r.area_distortion));
+  BOOST_TEST(!d.overlap);
+}
+
 BOOST_AUTO_TEST_CASE(flatten_charts_gives_both_sides_of_a_seam_the_same_length)
 {
   // a curved patch in two charts: the free flattenings give the two sides of

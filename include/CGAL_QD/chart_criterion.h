@@ -63,7 +63,8 @@ struct Chart_report
   double max_border_length_error = 0;
   bool overlap = false;                    ///< S(Omega): a flipped face, a branch vertex or a border crossing
   /// whether the flattening is the optimised one (`Chart_criterion::LPFB_IP_THEN_ARAP`), not LPFB+IP; in
-  /// a rejected merging trial, whether the measures are those of its optimised map, the last it judged
+  /// a rejected merging trial, whether the measures are those of its optimised map, the last it judged; in
+  /// a rejected final flattening, whether the flattening nearest the thresholds is an optimised one
   bool optimized = false;
   /// a merging trial that gave its optimisation up, its A_loc too far above the bound to come below it
   /// within the trial's iterations: after how many iterations (0: it did not). `area_distortion` and

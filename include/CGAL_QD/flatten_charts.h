@@ -456,8 +456,12 @@ Chart_flattening_result<TriangleMesh> flatten_charts_impl(const TriangleMesh& tm
 /// flattened by LPFB+IP and, with `Chart_criterion::LPFB_IP_THEN_ARAP`, by
 /// free-boundary ARAP where that is better, and measured against the
 /// thresholds; then the two sides of every seam curve get a common 2D length
-/// where both charts stay within the thresholds. Use it after changing a
-/// segmentation, e.g. after `smooth_chart_boundaries()`.
+/// where both charts stay within the thresholds. A chart that no flattening
+/// brings within the thresholds keeps the one nearest them (without an
+/// overlap before with one, then with the smallest largest ratio of A(Omega),
+/// L2 and A_loc to their bounds), and its report gives that flattening's
+/// measures. Use it after changing a segmentation, e.g. after
+/// `smooth_chart_boundaries()`.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`; the result is the same

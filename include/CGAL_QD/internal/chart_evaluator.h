@@ -285,14 +285,21 @@ private:
     // an optimised flattening `map` replaces the flattening of `rep` when it is
     // accepted and that one is not, or when both are and it has less local
     // area distortion; a trial that rejects both reports the optimised map,
-    // the last it judged
+    // the last it judged, and a final flattening that rejects both keeps the
+    // one nearer the thresholds (`nearer()`)
     auto better = [&](const auto& map, const Optimization_result& r) {
       Chart_report candidate = rep;
       if(!r || !measure(sm, map, candidate)) return false;
       candidate.optimized = true;
       if(!candidate.accepted) {
-        if(!corner_uv && !rep.accepted) rep = candidate;
-        return false;
+        if(rep.accepted) return false;
+        if(!corner_uv) {
+          rep = candidate;
+          return false;
+        }
+        if(!nearer(candidate, rep)) return false;
+        rep = candidate;
+        return true;
       }
       if(rep.accepted && !(candidate.local_area_distortion < rep.local_area_distortion)) return false;
       rep = candidate;
@@ -388,6 +395,24 @@ private:
   }
 
   static bool stopped(const std::atomic<bool>* stop) { return stop && stop->load(std::memory_order_relaxed); }
+
+  // of two flattenings beyond the thresholds, whether `a` is nearer them than
+  // `b`: without an overlap where `b` has one, else with the smaller largest
+  // ratio of A(Omega), L2 and A_loc to their bounds
+  bool nearer(const Chart_report& a, const Chart_report& b) const
+  {
+    if(a.overlap != b.overlap) return !a.overlap;
+    auto excess = [&](const Chart_report& r) {
+      double e = 0;
+      if(m_thresholds.max_l2_stretch > 0) e = r.l2_stretch / m_thresholds.max_l2_stretch;
+      if(m_thresholds.max_area_distortion > 0)
+        e = (std::max)(e, r.area_distortion / (100. * m_thresholds.max_area_distortion));
+      if(m_thresholds.max_local_area_distortion > 0)
+        e = (std::max)(e, r.local_area_distortion / (100. * m_thresholds.max_local_area_distortion));
+      return e;
+    };
+    return excess(a) < excess(b);
+  }
 
   // a face-index buffer of the mesh's size, all -1, taken from the
   // evaluator's pool for one trial and given back (all -1 again) after it
