@@ -1679,6 +1679,58 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(constrained_and_smooth_borders_stay, Mesh, Mesh_ty
   BOOST_TEST(num_faces(flat) == faces_before);
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(chart_in_two_parts_of_different_topology_is_smoothed_on_both, Mesh, Mesh_types)
+{
+  // chart 0 in two parts along the diagonal, each with a staircase border to
+  // chart 1 between them; the upper-left part holds chart 2 as an island, so
+  // it is a ring while the lower-right part is a disc. The smoothing measures
+  // a chart's topology once only where it holds the chart whole: both
+  // staircases are smoothed, whichever part comes first.
+  const std::size_t n = 24;
+  Mesh tm = make<Mesh>(flat_grid(n, n));
+  Face_map<Mesh> chart;
+  for(auto f : faces(tm)) {
+    double c[2] = {0., 0.};
+    for(auto v : vertices_around_face(halfedge(f, tm), tm))
+      for(int k = 0; k < 2; ++k) c[k] += p3(tm, v)[k] / 3;
+    const double d = std::floor(c[0] * n) - std::floor(c[1] * n);
+    chart[f] = std::abs(d) <= 3 ? 1 : 0;
+    if(c[0] > 0.1 && c[0] < 0.25 && c[1] > 0.7 && c[1] < 0.85) chart[f] = 2;
+  }
+  auto zigzag_between = [&](std::size_t a, std::size_t b) {
+    std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> between;
+    for(auto e : chart_borders(tm, chart)) {
+      const auto h = halfedge(e, tm);
+      const std::set<std::size_t> sides = {chart.at(face(h, tm)), chart.at(face(opposite(h, tm), tm))};
+      if(sides == std::set<std::size_t>{a, b}) between.push_back(e);
+    }
+    return QD::seam_zigzag(tm, between).zigzag;
+  };
+  BOOST_REQUIRE(zigzag_between(0, 1) > 1.1);
+  const QD::Boundary_smoothing_result r = QD::smooth_chart_boundaries(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(r);
+  BOOST_TEST(r.number_of_curves >= 3u);
+  BOOST_TEST(r.curves_failed == 0u);
+  BOOST_TEST(r.curves_smoothed == r.number_of_curves);
+  BOOST_TEST(zigzag_between(0, 1) < 1.03);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(tm));
+  // the island is still one chart inside the ring, and chart 1 still one strip
+  for(std::size_t k : {1u, 2u}) {
+    std::set<typename boost::graph_traits<Mesh>::face_descriptor> part;
+    std::vector<typename boost::graph_traits<Mesh>::face_descriptor> queue;
+    std::size_t total = 0;
+    for(auto f : faces(tm))
+      if(chart.at(f) == k && total++ == 0) queue.push_back(f), part.insert(f);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(auto h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
+        const auto o = opposite(h, tm);
+        if(!is_border(o, tm) && chart.at(face(o, tm)) == k && part.insert(face(o, tm)).second)
+          queue.push_back(face(o, tm));
+      }
+    BOOST_TEST(part.size() == total);
+  }
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(staircase_cut_inside_a_chart_is_cut_smooth, Mesh, Mesh_types)
 {
   // one chart with a staircase slit from a corner of the grid to its middle

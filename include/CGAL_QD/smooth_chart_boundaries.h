@@ -169,7 +169,7 @@ Boundary_smoothing_result smooth_chart_boundaries(TriangleMesh& tm, FaceChartMap
   typedef internal::Chart_boundary_smoother<TriangleMesh, typename std::remove_const<decltype(vpm)>::type,
                                             FaceChartMap, typename std::remove_const<decltype(ecm)>::type>
       Smoother;
-  Smoother smoother(tm, vpm, face_chart, ecm, sharp, 3, rounds);
+  Smoother smoother(tm, vpm, face_chart, ecm, sharp, 3, rounds, true);
 
   // the curves, as vertex chains, before any change
   std::vector<std::pair<std::vector<vertex_descriptor>, bool>> curves;

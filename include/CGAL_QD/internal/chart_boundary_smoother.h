@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -61,9 +62,12 @@ class Chart_boundary_smoother
 public:
   static constexpr double smooth_enough = 1.01;  // curves below this zigzag are left alone
 
+  // With `charts_change_only_here`, the caller changes no chart between
+  // two curves (the charts change only where a curve is smoothed), and the
+  // topology of a chart is measured once (see `topology_before()`).
   Chart_boundary_smoother(TriangleMesh& tm, VPM vpm, FaceChartMap chart, ECM ecm, double sharp_angle_degrees,
-                          std::size_t rings, std::size_t rounds)
-      : m_tm(tm), m_vpm(vpm), m_chart(chart), m_ecm(ecm),
+                          std::size_t rings, std::size_t rounds, bool charts_change_only_here = false)
+      : m_tm(tm), m_vpm(vpm), m_chart(chart), m_ecm(ecm), m_keep_topology(charts_change_only_here),
         m_cos_sharp(std::cos(sharp_angle_degrees * 3.14159265358979323846 / 180.)), m_rings(rings), m_rounds(rounds),
         m_node_ids(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm)),
         m_face_ids(get(CGAL::dynamic_face_property_t<std::size_t>(), tm))
@@ -131,7 +135,7 @@ public:
     m_mean_edge = polyline_length(m_original, closed) / double(ne);
 
     build_charts();
-    for(int label = 0; label < 2; ++label) m_before[label] = labelled_topology(m_cut.tris, label, m_cut.nodes.size());
+    topology_before();
     for(std::size_t rounds = m_rounds; rounds >= 2; rounds /= 2) {
       if(!compute_phi(rounds)) continue;
       m_cut.remove_islands();
@@ -275,6 +279,46 @@ private:
     }
   }
 
+  // The topology of A and B before the change. Where only this smoother
+  // changes the charts, a chart met before keeps the topology found then:
+  // every cut applied since kept it (`Band_cut::verify()`). That holds for a
+  // chart held whole in the copy, which is grown from the curve and holds
+  // only the faces of the chart connected to it: a chart with more faces
+  // than its copy is measured every time.
+  void topology_before()
+  {
+    if(!m_keep_topology) {
+      for(int label = 0; label < 2; ++label)
+        m_before[std::size_t(label)] = labelled_topology(m_cut.tris, label, m_cut.nodes.size());
+      return;
+    }
+    if(!m_counted) {
+      for(face_descriptor f : faces(m_tm)) ++m_chart_faces[get(m_chart, f)];
+      m_counted = true;
+    }
+    std::array<std::size_t, 2> copied = {{0, 0}};
+    for(const Tri& t : m_cut.tris) ++copied[std::size_t(t.label)];
+    for(int label = 0; label < 2; ++label) {
+      const Label chart = label == 0 ? m_a : m_b;
+      const bool whole = copied[std::size_t(label)] == m_chart_faces[chart];
+      const auto known = m_topology.find(chart);
+      if(whole && known != m_topology.end()) {
+        m_before[std::size_t(label)] = known->second;
+        continue;
+      }
+      m_before[std::size_t(label)] = labelled_topology(m_cut.tris, label, m_cut.nodes.size());
+      if(whole) m_topology[chart] = m_before[std::size_t(label)];
+    }
+  }
+
+  // a face more (+1) or less (-1) in chart c, once the charts are counted
+  void count_face(Label c, int change)
+  {
+    if(!m_counted) return;
+    std::size_t& n = m_chart_faces[c];
+    n = change > 0 ? n + 1 : n - 1;
+  }
+
   // ------------------------------------------------------------------ phi
   bool compute_phi(std::size_t rounds)
   {
@@ -416,6 +460,7 @@ private:
           break;
         }
       }
+      count_face(m_cut.tris[fp.face].label == 0 ? m_a : m_b, -1);
       for(face_descriptor g : parts) {
         const halfedge_descriptor h = halfedge(g, m_tm);
         std::array<std::size_t, 3> t;
@@ -424,21 +469,27 @@ private:
           const vertex_descriptor v = target(e, m_tm);
           t[std::size_t(k++ % 3)] = node_id(v);
         }
-        put(m_chart, g, m_cut.label_of(t, m_cut.tris[fp.face].label) == 0 ? m_a : m_b);
+        const Label chart = m_cut.label_of(t, m_cut.tris[fp.face].label) == 0 ? m_a : m_b;
+        put(m_chart, g, chart);
+        count_face(chart, 1);
       }
     }
     // faces without a split that changed sides
     std::vector<char> split(m_cut.tris.size(), 0);
     for(const Band_cut::Face_plan& fp : m_cut.plans) split[fp.face] = 1;
     for(std::size_t i = 0; i < m_cut.tris.size(); ++i)
-      if(m_cut.in_band[i] && m_cut.after[i].label != m_cut.tris[i].label && !split[i])
+      if(m_cut.in_band[i] && m_cut.after[i].label != m_cut.tris[i].label && !split[i]) {
         put(m_chart, m_faces[i], m_cut.after[i].label == 0 ? m_a : m_b);
+        count_face(m_cut.tris[i].label == 0 ? m_a : m_b, -1);
+        count_face(m_cut.after[i].label == 0 ? m_a : m_b, 1);
+      }
   }
 
   TriangleMesh& m_tm;
   VPM m_vpm;
   FaceChartMap m_chart;
   ECM m_ecm;
+  bool m_keep_topology;
   double m_cos_sharp;
   std::size_t m_rings, m_rounds;
 
@@ -461,6 +512,11 @@ private:
   typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t>>::type m_face_ids;
   std::vector<vertex_descriptor> m_numbered;  // the vertices with a node id
   std::array<Labelled_topology, 2> m_before;  // of A and B, before the change
+  // the faces of every chart, counted at the first curve and kept up to date
+  // by `apply()`, and the topology of the charts met whole
+  std::map<Label, std::size_t> m_chart_faces;
+  bool m_counted = false;
+  std::map<Label, Labelled_topology> m_topology;
 };
 
 // the edges between two charts, and the constrained edges
