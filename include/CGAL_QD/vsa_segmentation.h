@@ -13,7 +13,6 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/charts.h>
-#include <CGAL_QD/internal/cluster_vsa.h>
 #include <CGAL_QD/internal/normal_vsa.h>
 #include <CGAL_QD/internal/smooth_face_normals.h>
 #include <CGAL_QD/internal/union_find.h>
@@ -67,9 +66,6 @@ struct Vsa_result
   double min_chart_area = 0;
   /// the cap that applied: the named parameter, else ceil(total area / `min_chart_area`)
   std::size_t max_number_of_proxies = 0;
-  /// on a fine mesh (where the normals are averaged over clusters of faces): the rounds of
-  /// proxy additions made on those clusters before the faces were relaxed; 0 otherwise
-  std::size_t cluster_rounds = 0;
   double time_ms = 0;
 
   explicit operator bool() const { return status == Error_code::OK; }
@@ -87,11 +83,6 @@ inline constexpr double vsa_min_chart_size = 0.07;
 // normals are not averaged across edges whose dihedral angle turns the
 // normal by more than 60 degrees (creases such as a cube's edges)
 inline constexpr double vsa_crease_cos = 0.5;
-// on a fine mesh, the proxies added on clusters of faces (internal/cluster_vsa.h)
-// bring every chart to this fraction of the tolerance, so that the relaxation
-// on the faces that follows seldom leaves one beyond the tolerance itself (each
-// proxy added then costs three floodings of every face)
-inline constexpr double vsa_cluster_margin = 0.9;
 
 // Normalised L2,1 error of every chart, from per-face unit normals and areas.
 template <class TriangleMesh, class FIM, class ChartOf>
@@ -245,14 +236,7 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 ///     these normals;
 ///   - a chart whose area is below (0.07 D)^2 is not split further, whatever
 ///     its error: the tolerance is reached when every larger chart is within it;
-///   - the default proxy cap is ceil(total area / (0.07 D)^2);
-///   - on a mesh fine enough for the normals to be averaged over clusters of
-///     faces, the proxies are added on those clusters first (the error of a
-///     cluster against a proxy follows exactly from two sums over its faces),
-///     until every chart is within 0.9 times the tolerance; the Lloyd
-///     relaxation then runs on the faces from the charts found, and proxies
-///     are added on the faces as above where a chart is still beyond the
-///     tolerance (`Vsa_result::cluster_rounds`).
+///   - the default proxy cap is ceil(total area / (0.07 D)^2).
 ///
 /// The mesh may be closed, have borders, several components or handles.
 ///
@@ -316,30 +300,17 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
       std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
   result.smoothing_radius = internal::vsa_smoothing_radius * diagonal;
   result.min_chart_area = internal::vsa_min_chart_size * diagonal * internal::vsa_min_chart_size * diagonal;
-  std::vector<std::size_t> cluster_of;  // on a fine mesh: the clusters of the normal smoothing
-  const std::vector<internal::Face_geometry> geo = internal::smooth_face_normals<ConcurrencyTag>(
-      tm, fim, raw, result.smoothing_radius, internal::vsa_crease_cos, internal::clustered_disc_faces,
-      internal::disc_cluster_radius, &cluster_of);
+  const std::vector<internal::Face_geometry> geo =
+      internal::smooth_face_normals<ConcurrencyTag>(tm, fim, raw, result.smoothing_radius, internal::vsa_crease_cos);
   const std::size_t geometric_cap =
       result.min_chart_area > 0 ? static_cast<std::size_t>(std::ceil(total_area / result.min_chart_area)) : 1;
   const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),
                                                    (std::max<std::size_t>)(1, geometric_cap));
   result.max_number_of_proxies = max_proxies;
 
-  const std::vector<std::array<std::size_t, 3>> next_to = internal::face_neighbours(tm, fim);
-  internal::Normal_vsa vsa(geo, next_to, internal::faces_in_order(tm, fim));
-  std::size_t first_proxies = 0;
-  if(cluster_of.empty()) {
-    vsa.bootstrap();
-    first_proxies = vsa.number_of_proxies();
-  } else {
-    // a fine mesh: the proxies are added on the clusters first
-    std::size_t n = 0;
-    result.cluster_rounds = internal::vsa_on_clusters(geo, next_to, internal::vsa_cluster_margin * tolerance,
-                                                      result.min_chart_area, max_proxies,
-                                                      relaxations, cluster_of, first_proxies, n);
-    vsa.start_from(cluster_of, n);
-  }
+  internal::Normal_vsa vsa(geo, internal::face_neighbours(tm, fim), internal::faces_in_order(tm, fim));
+  vsa.bootstrap();
+  const std::size_t first_proxies = vsa.number_of_proxies();
   vsa.run(relaxations);
 
   std::vector<std::size_t> chart;

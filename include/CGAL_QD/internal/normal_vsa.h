@@ -193,15 +193,6 @@ public:
 
   std::size_t number_of_proxies() const { return m_proxies.size(); }
 
-  // the proxies of a partition of the faces into `n` charts (by face index,
-  // every chart with at least one face), each fitted to its faces
-  void start_from(const std::vector<std::size_t>& proxy_of_face, std::size_t n)
-  {
-    m_proxies.assign(n, Proxy{{{0., 0., 0.}}, 0, 0.});
-    for(std::size_t i = 0; i < m_face.size(); ++i) m_proxy_of[i] = static_cast<std::uint32_t>(proxy_of_face[m_face[i]]);
-    refit();
-  }
-
   // the proxy of every face
   std::vector<std::size_t> proxy_of() const
   {

@@ -139,17 +139,13 @@ std::array<double, 3> disc_sum(std::size_t start, const std::array<double, 3>& c
 // number of clusters in a disc, which does not grow with the face count.
 //
 // With `CGAL::Parallel_tag` the faces' discs are summed in parallel (the
-// clusters are grown first, in order): the result is the same. `clusters`, if
-// given, receives the cluster of every face by face index where the faces
-// were clustered, and is left empty otherwise.
+// clusters are grown first, in order): the result is the same.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FIM>
 std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM& fim,
                                                const std::vector<Face_geometry>& geo, double radius,
                                                double sharp_cos, double cluster_above = clustered_disc_faces,
-                                               double cluster_radius = disc_cluster_radius,
-                                               std::vector<std::size_t>* clusters = nullptr)
+                                               double cluster_radius = disc_cluster_radius)
 {
-  if(clusters) clusters->clear();
   const std::size_t nf = geo.size(), none = std::size_t(-1);
   std::vector<Face_geometry> out = geo;
   if(!(radius > 0) || nf == 0) return out;
@@ -300,7 +296,6 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
         [&](std::size_t c) -> const std::array<double, 3>& { return cluster[c].normal_sum; }, s, seen, scratch);
     set_normal(f, sum);
   });
-  if(clusters) clusters->swap(cluster_of);
   return out;
 }
 
