@@ -361,6 +361,14 @@ int main(int argc, char** argv)
     for(std::size_t i = 0; i < pages.assembly.size(); ++i)
       message << (i == 0 ? "  assembly       " : "                 ")
               << CGAL_QD::IO::assembly_step_text(pages.assembly, i) << "\n";
+    // the seams whose sides differ, as the pattern's last page lists them
+    bool first = true;
+    for(const CGAL_QD::IO::Pattern_seam& seam : pages.seams) {
+      if(seam.matched) continue;
+      message << (first ? "  ease in        " : "                 ") << CGAL_QD::IO::pattern_seam_text(seam, pattern.units)
+              << "\n";
+      first = false;
+    }
     written = message.str();
   }
   if(o.json) {

@@ -120,6 +120,13 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"notches", p.notches},
                      {"seam_allowance", number(patterns.seam_allowance)},
                      {"pdf", patterns.pdf}};
+    Json seams = Json::array();
+    for(const CGAL_QD::IO::Pattern_seam& seam : p.seams)
+      seams.push_back({{"label", seam.label},
+                       {"pieces", {seam.pieces[0], seam.pieces[1]}},
+                       {"sides", {number(seam.sides[0]), number(seam.sides[1])}},
+                       {"matched", seam.matched}});
+    j["patterns"]["seams"] = std::move(seams);
     j["viewer"] = patterns.viewer;
     Json steps = Json::array();
     for(std::size_t i = 0; i < p.assembly.size(); ++i)

@@ -513,6 +513,86 @@ BOOST_AUTO_TEST_CASE(patterns_list_the_assembly_order)
   }
 }
 
+// the two sides of every seam as drawn: with the paper's criterion every
+// border edge keeps its 3D length, so every seam matches; one piece drawn 2 %
+// larger leaves exactly its seams with the other pieces unmatched, 2 % apart,
+// and the last page lists them
+BOOST_AUTO_TEST_CASE(patterns_name_the_seams_whose_sides_differ)
+{
+  for(const Segmented& s : meshes()) {
+    const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+    QD::IO::Pattern_options options;
+    options.scale = 100;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr =
+        QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+    BOOST_REQUIRE(pr);
+    BOOST_REQUIRE(pr.seams.size() == pr.seam_labels);
+    BOOST_REQUIRE(!pr.seams.empty());
+    double drawn = 0;
+    for(const QD::IO::Pattern_seam& seam : pr.seams) {
+      BOOST_TEST(seam.matched, "seam " << seam.label << ": " << seam.sides[0] << " against " << seam.sides[1]);
+      BOOST_TEST(seam.sides[0] == seam.sides[1], tt::tolerance(1e-6));
+      drawn += seam.sides[0];
+    }
+    // the sides as drawn are the seams' 3D lengths at the scale
+    BOOST_TEST(drawn == options.scale * s.result.seam_length, tt::tolerance(1e-6));
+    BOOST_TEST(ss.str().find("Ease in") == std::string::npos);
+
+    // the piece with the most seams drawn 2 % larger about its first corner
+    std::map<std::size_t, std::size_t> seams_of;
+    for(const QD::IO::Pattern_seam& seam : pr.seams)
+      if(seam.pieces[0] != seam.pieces[1]) ++seams_of[seam.pieces[0]], ++seams_of[seam.pieces[1]];
+    const std::size_t k =
+        std::max_element(seams_of.begin(), seams_of.end(), [](const auto& a, const auto& b) { return a.second < b.second; })
+            ->first;
+    std::vector<std::array<double, 2>> uv = s.result.corner_uv;
+    std::array<double, 2> origin{{0., 0.}};
+    bool first = true;
+    for(auto f : faces(s.tm)) {
+      if(s.chart.at(f) != k) continue;
+      for(int c = 0; c < 3; ++c) {
+        std::array<double, 2>& p = uv[3 * std::size_t(f) + c];
+        if(first) origin = p, first = false;
+        p = {{origin[0] + 1.02 * (p[0] - origin[0]), origin[1] + 1.02 * (p[1] - origin[1])}};
+      }
+    }
+    std::stringstream grown;
+    const QD::IO::Pattern_result pg = QD::IO::write_patterns_SVG(grown, s.tm, chart, uv, s.result.seam_edges, options);
+    BOOST_REQUIRE(pg);
+    BOOST_REQUIRE(pg.seams.size() == pr.seams.size());
+    std::size_t unmatched = 0;
+    for(std::size_t i = 0; i < pg.seams.size(); ++i) {
+      const QD::IO::Pattern_seam &before = pr.seams[i], &after = pg.seams[i];
+      BOOST_TEST(after.label == before.label);
+      BOOST_TEST((after.pieces == before.pieces));
+      const bool one_side = (after.pieces[0] == k) != (after.pieces[1] == k);
+      BOOST_TEST(after.matched == !one_side, "seam " << after.label);
+      for(int side = 0; side < 2; ++side)
+        BOOST_TEST(after.sides[side] == (after.pieces[side] == k ? 1.02 : 1.) * before.sides[side], tt::tolerance(1e-9));
+      if(!one_side) continue;
+      ++unmatched;
+      // listed on the last page with its two lengths
+      const std::string line = QD::IO::pattern_seam_text(after, options.units);
+      BOOST_TEST(line.find(after.label + ": ") == 0u);
+      BOOST_TEST(line.find("(2.0 %)") != std::string::npos, line);
+      BOOST_TEST(grown.str().find(">" + line + "<") != std::string::npos, line);
+    }
+    BOOST_TEST(unmatched == seams_of[k]);
+    BOOST_TEST(grown.str().find("Ease in the longer side") != std::string::npos);
+  }
+  // the line's lengths: three significant digits, one to three decimals
+  QD::IO::Pattern_seam seam;
+  seam.label = "G";
+  seam.pieces = {{3, 5}};
+  seam.sides = {{152.34, 139.06}};
+  BOOST_TEST(QD::IO::pattern_seam_text(seam, "mm") == "G: 152.3 mm on piece 3, 139.1 mm on piece 5 (8.7 %)");
+  seam.sides = {{1.0, 0.987}};
+  BOOST_TEST(QD::IO::pattern_seam_text(seam, "in") == "G: 1.00 in on piece 3, 0.99 in on piece 5 (1.3 %)");
+  seam.sides = {{0.05, 0.0498}};
+  BOOST_TEST(QD::IO::pattern_seam_text(seam, "cm") == "G: 0.050 cm on piece 3, 0.050 cm on piece 5 (0.4 %)");
+}
+
 // two parts of a model, each built outward from its largest piece; a cut
 // inside a piece is sewn when the piece is joined
 BOOST_AUTO_TEST_CASE(assembly_order_follows_the_longest_seams)

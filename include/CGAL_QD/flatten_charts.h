@@ -13,6 +13,7 @@
 #include <CGAL_QD/chart_criterion.h>
 #include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/segmentation_measures.h>
@@ -101,8 +102,6 @@ struct Chart_flattening_result
 
 namespace internal {
 
-// a seam curve matches when its two sides differ by at most this fraction of the longer
-inline constexpr double matched_seam_tolerance = 0.005;
 // the rounds of the final flattening that pull every chart's border towards
 // the mean lengths of its seams, and the weight of the pull
 // (`border_length_weight`): measured on CGAL's meshes, 4 to 6 rounds match as

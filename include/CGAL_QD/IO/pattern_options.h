@@ -10,7 +10,11 @@
 
 #include <CGAL_QD/Error_code.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -93,6 +97,41 @@ inline std::string assembly_step_text(const std::vector<Assembly_step>& steps, s
 }
 
 /// \ingroup PkgCGAL_QDRef
+/// a seam curve as the pattern draws it (`Pattern_result::seams`): its label and the lengths of its two
+/// sides on paper. Where the flattening could not bring the two sides within 0.5 % of each other, the
+/// longer side is to be eased in when the seam is sewn or glued.
+struct Pattern_seam
+{
+  std::string label;  ///< as printed on both sides: "A", "B", ...
+  /// the pieces on its two sides (the same piece twice for a cut inside a piece)
+  std::array<std::size_t, 2> pieces = {{0, 0}};
+  /// the length of each side as drawn, in drawing units: side k on piece `pieces[k]`
+  std::array<double, 2> sides = {{0., 0.}};
+  /// whether the two sides differ by at most 0.5 % of the longer
+  bool matched = true;
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// the line the pattern's assembly page prints for a seam whose sides differ: "G: 152.3 mm on piece 3,
+/// 139.1 mm on piece 5 (8.7 %)", the lengths to three significant digits and at least one decimal
+/// (at most three), the difference as a percentage of the longer side
+inline std::string pattern_seam_text(const Pattern_seam& s, const std::string& units)
+{
+  auto fixed = [](double x, int decimals) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, x);
+    return std::string(buffer);
+  };
+  const double longer = (std::max)(s.sides[0], s.sides[1]);
+  const int decimals =
+      longer > 0 && std::isfinite(longer) ? (std::min)(3, (std::max)(1, 2 - int(std::floor(std::log10(longer))))) : 1;
+  const double difference = longer > 0 ? 100 * std::abs(s.sides[0] - s.sides[1]) / longer : 0.;
+  return s.label + ": " + fixed(s.sides[0], decimals) + " " + units + " on piece " + std::to_string(s.pieces[0]) +
+         ", " + fixed(s.sides[1], decimals) + " " + units + " on piece " + std::to_string(s.pieces[1]) + " (" +
+         fixed(difference, 1) + " %)";
+}
+
+/// \ingroup PkgCGAL_QDRef
 /// what `write_patterns_SVG()` or `write_patterns_PDF()` drew.
 struct Pattern_result
 {
@@ -116,6 +155,8 @@ struct Pattern_result
   /// the order in which to join the pieces, built outward from the largest (by 3D area): each step
   /// joins the piece that shares the longest seams with those joined before
   std::vector<Assembly_step> assembly;
+  /// every labelled seam curve, in label order; the assembly page lists those not `matched`
+  std::vector<Pattern_seam> seams;
 
   explicit operator bool() const { return status == Error_code::OK; }
 };

@@ -84,6 +84,8 @@ namespace IO {
 ///   which to join the pieces (`Pattern_result::assembly`): outward from the
 ///   largest piece (by 3D area), each step the piece that shares the longest
 ///   seams with those joined before, and the labels of the seams it closes;
+///   then the seams whose two sides differ by more than 0.5 % as drawn, each
+///   with its two lengths, to be eased in (`Pattern_result::seams`);
 /// - labels at most `font_size` high and at most a quarter (seams) or a third
 ///   (chart ids) of the piece's smaller side; lines at most 0.25 mm wide and
 ///   at most 1/40 of the smallest piece's smaller side.

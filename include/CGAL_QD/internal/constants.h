@@ -14,6 +14,11 @@ inline constexpr double pi = 3.14159265358979323846;
 // matched, seams smoothed); the final charts are measured against the bound
 inline constexpr double local_area_distortion_margin = 0.05;
 
+// a seam curve matches when its two sides differ by at most this fraction of
+// the longer (the final flattening fits them to it; the pattern names the
+// seams that do not)
+inline constexpr double matched_seam_tolerance = 0.005;
+
 } // namespace internal
 } // namespace CGAL_QD
 

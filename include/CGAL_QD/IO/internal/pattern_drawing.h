@@ -19,6 +19,7 @@
 #include <CGAL_QD/IO/internal/seam_allowance.h>
 #endif
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segmentation_measures.h>
@@ -86,10 +87,20 @@ struct Pattern_drawing
 
 // the lines of the assembly page, `page` of `d`, in columns, made smaller
 // until they fit
-inline void lay_out_assembly_page(const std::vector<IO::Assembly_step>& steps, std::size_t page, Pattern_drawing& d)
+inline void lay_out_assembly_page(const std::vector<IO::Assembly_step>& steps,
+                                  const std::vector<IO::Pattern_seam>& seams, const std::string& units,
+                                  std::size_t page, Pattern_drawing& d)
 {
   std::vector<std::string> steps_text;
   for(std::size_t i = 0; i < steps.size(); ++i) steps_text.push_back(IO::assembly_step_text(steps, i));
+  // then the seams whose sides differ, each with its two lengths
+  bool eased = false;
+  for(const IO::Pattern_seam& s : seams) {
+    if(s.matched) continue;
+    if(!eased) steps_text.push_back("Ease in the longer side of these seams, whose sides differ by more than 0.5 %:");
+    eased = true;
+    steps_text.push_back(IO::pattern_seam_text(s, units));
+  }
   const double m = d.page_margin, title = 1.2 * d.font_size, top = d.page_height * page + m + 2 * title;
   const double width = d.page_width - 2 * m, height = d.page_height - 2 * m - 2 * title;
   // a step longer than its column goes on, indented, after a comma
@@ -322,6 +333,23 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     curve_length[id] = total;
   }
   result.seam_labels = curves.size();
+  // the two sides of every curve as drawn
+  for(std::size_t id = 0; id < curves.size(); ++id) {
+    IO::Pattern_seam ps;
+    ps.label = seam_label(id);
+    for(int side = 0; side < 2; ++side) {
+      auto on_side = [&](halfedge_descriptor h) { return side == 0 ? h : opposite(h, tm); };
+      ps.pieces[side] = chart[get(fim, face(on_side(curves[id].front()), tm))];
+      for(halfedge_descriptor h : curves[id]) {
+        const halfedge_descriptor g = on_side(h);
+        const P2 a = point_at(corner(prev(g, tm))), b = point_at(corner(g));
+        ps.sides[side] += std::hypot(b[0] - a[0], b[1] - a[1]);
+      }
+    }
+    ps.matched = std::abs(ps.sides[0] - ps.sides[1]) <=
+                 CGAL_QD::internal::matched_seam_tolerance * (std::max)(ps.sides[0], ps.sides[1]);
+    result.seams.push_back(ps);
+  }
   // notches: at the same fractions of the 2D length of the two sides of every
   // seam curve, so that they meet when the seam is sewn; numbered along the
   // curve, from the same end on both sides
@@ -398,7 +426,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.pieces.clear();
   drawing.assembly.clear();
   if(options.assembly_page && !result.assembly.empty()) {
-    lay_out_assembly_page(result.assembly, result.number_of_pages, drawing);
+    lay_out_assembly_page(result.assembly, result.seams, options.units, result.number_of_pages, drawing);
     drawing.number_of_pages = ++result.number_of_pages;
   }
   const double ph = options.page_height;
