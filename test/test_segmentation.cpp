@@ -23,7 +23,6 @@
 #include <CGAL_QD/smooth_chart_cuts.h>
 #include <CGAL_QD/smooth_segmentation_seams.h>
 #include <CGAL_QD/vsa_segmentation.h>
-#include <CGAL_QD/internal/hopeless_trial.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Variational_shape_approximation.h>
@@ -1982,63 +1981,6 @@ BOOST_AUTO_TEST_CASE(rejected_trial_reports_its_optimised_map)
   BOOST_TEST(hopeless.local_area_distortion > 2.5 * std::pow(30. / 5., 0.6));
   BOOST_TEST(hopeless.area_distortion > 0.);
   BOOST_TEST(hopeless.l2_stretch == 0.);  // not measured
-}
-
-BOOST_AUTO_TEST_CASE(hopeless_trial_gives_up_on_a_border_that_crosses_itself)
-{
-  // A strip along a prolate cycloid, which loops five times, rising slowly so
-  // that it does not meet itself in 3D; its map is its shadow on the plane:
-  // nearly no area distortion, but at every loop the strip crosses itself,
-  // its two borders across the other part's two. The same strip along an
-  // arc crosses nothing.
-  auto strip = [](bool loops, Surface_mesh& sm) {
-    const int n = 600;
-    const double end = loops ? 12 * CGAL_PI : 2., width = 0.2, a = loops ? 2. : 0.;
-    std::vector<Surface_mesh::Vertex_index> left, right;
-    for(int i = 0; i <= n; ++i) {
-      const double t = end * i / n;
-      const double x = t - a * std::sin(t), y = loops ? 1 - a * std::cos(t) : 0.1 * t * t;
-      const double dx = 1 - a * std::cos(t), dy = loops ? a * std::sin(t) : 0.2 * t, l = std::hypot(dx, dy);
-      const double nx = -dy / l * width / 2, ny = dx / l * width / 2, z = 0.05 * t;
-      left.push_back(sm.add_vertex(Epick::Point_3(x + nx, y + ny, z)));
-      right.push_back(sm.add_vertex(Epick::Point_3(x - nx, y - ny, z)));
-    }
-    for(int i = 0; i < n; ++i) {
-      sm.add_face(left[i], right[i], right[i + 1]);
-      sm.add_face(left[i], right[i + 1], left[i + 1]);
-    }
-  };
-  for(const bool loops : {true, false}) {
-    Surface_mesh sm;
-    strip(loops, sm);
-    BOOST_REQUIRE(CGAL::is_valid_polygon_mesh(sm));
-    auto uv = sm.add_property_map<Surface_mesh::Vertex_index, Epick::Point_2>("v:uv").first;
-    for(auto v : vertices(sm)) put(uv, v, Epick::Point_2(sm.point(v).x(), sm.point(v).y()));
-    const QD::internal::Hopeless_trial<Surface_mesh> hopeless(sm, 0.025, 30, 1e-9);
-    const std::size_t crossings = hopeless.border_crossings(uv);
-    // the count is that of the border crossings `compute_distortion()` reports
-    const auto d = QD::compute_distortion(sm, uv, QD::parameters::overlap_tolerance(1e-9));
-    BOOST_REQUIRE(d);
-    BOOST_TEST(d.flipped_faces == 0u);
-    BOOST_TEST(crossings == d.border_crossings.size());
-    if(loops) {
-      BOOST_TEST(crossings >= 5 * 4u);
-    } else {
-      BOOST_TEST(crossings == 0u);
-    }
-    // given up at every checkpoint before the 30th iteration, for the crossings: A_loc is below the bound
-    for(std::size_t iterations : {5u, 10u, 15u, 20u, 25u}) {
-      BOOST_TEST(hopeless(uv, iterations) == loops);
-      BOOST_TEST(hopeless.crossed() == loops);
-      BOOST_TEST(hopeless.local_area_distortion() < 0.5);
-    }
-    BOOST_TEST(!hopeless(uv, 30));
-    BOOST_TEST(!hopeless(uv, 7));
-    // the limits: twice the most crossings a trial accepted at iteration 30 had at each checkpoint
-    BOOST_TEST(hopeless.crossing_limit(5) == 16u);
-    BOOST_TEST(hopeless.crossing_limit(25) == 4u);
-    BOOST_TEST(hopeless.crossing_limit(30) == 0u);
-  }
 }
 
 BOOST_AUTO_TEST_CASE(flatten_charts_keeps_the_flattening_nearest_the_thresholds)

@@ -67,9 +67,9 @@ struct Chart_report
   /// a rejected final flattening, whether the flattening nearest the thresholds is an optimised one
   bool optimized = false;
   /// a merging trial that gave its optimisation up, its A_loc too far above the bound to come below it
-  /// within the trial's iterations or its border crossing itself widely: after how many iterations (0: it
-  /// did not). `area_distortion` and `local_area_distortion` are then those of its map at that point,
-  /// `overlap` whether it gave up for the crossings; `l2_stretch` (0) is not measured
+  /// within the trial's iterations: after how many iterations (0: it did not). `area_distortion` and
+  /// `local_area_distortion` are then those of its map at that point; `l2_stretch` (0) and `overlap`
+  /// (false) are not measured
   std::size_t given_up_after = 0;
   /// whether every border edge has exactly (up to the border solver's tolerance) its share of the
   /// length common to the two sides of its seam (the final flattening with

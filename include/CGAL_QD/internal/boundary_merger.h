@@ -269,7 +269,7 @@ public:
             std::cerr << error_message(rep.status);
           else if(rep.given_up_after > 0)
             std::cerr << "ARAP given up after " << rep.given_up_after << " iterations, A_loc "
-                      << rep.local_area_distortion << " %" << (rep.overlap ? ", its border crossing itself" : "");
+                      << rep.local_area_distortion << " %";
           else
             std::cerr << (rep.optimized ? "ARAP" : "LPFB+IP") << ": A " << rep.area_distortion << " %, L2 "
                       << rep.l2_stretch << ", A_loc " << rep.local_area_distortion << " %"

@@ -324,9 +324,8 @@ private:
         o = optimize_flattening(sm, opt, trial_parameters());
       } else {
         // a trial gives up where its A_loc is too far above the bound to come
-        // below it by iteration 30, or its border crosses itself widely
-        const Hopeless_trial<Mesh> hopeless(sm, m_thresholds.max_local_area_distortion, 30,
-                                            m_thresholds.overlap_tolerance);
+        // below it by iteration 30
+        const Hopeless_trial<Mesh> hopeless(sm, m_thresholds.max_local_area_distortion, 30);
         o = optimize_flattening(sm, opt, parameters::iteration_callback([&](std::size_t iterations) {
           return stopped(stop) || hopeless(opt, iterations);
         }, trial_parameters()));
@@ -337,7 +336,7 @@ private:
             rep.area_distortion = hopeless.area_distortion();
             rep.local_area_distortion = hopeless.local_area_distortion();
             rep.l2_stretch = rep.max_border_length_error = 0;
-            rep.overlap = hopeless.crossed();
+            rep.overlap = false;
           }
           return rep;
         }
