@@ -19,6 +19,7 @@
 #include <CGAL_QD/internal/digest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <list>
@@ -181,25 +182,15 @@ template <class Matrix, int UpLo, class Ordering>
 struct Is_simplicial_LDLT<Eigen::SimplicialLDLT<Matrix, UpLo, Ordering>> : std::true_type
 {};
 
-// X = A^-1 B with the factorisation P A P^T = L D L^T of `ldlt`. A B of two
-// columns (the u and v of a flattening) is solved in one pass over L for each
-// triangular solve, where Eigen makes one per column; every column goes
-// through the same operations in the same order as in Eigen's
-// SimplicialLDLT::solve(), so X is the same to the last bit. Any other B, or
-// an L not in compressed storage, goes to Eigen's solve().
+// y = (L D L^T)^-1 y with the factorisation P A P^T = L D L^T of `ldlt`, for
+// the two columns of y held row by row (Y[2 i], Y[2 i + 1]) in the order of
+// the factorisation (P applied). Every column goes through the same
+// operations in the same order as in Eigen's SimplicialLDLT::solve(), so the
+// result is the same to the last bit. L must be in compressed storage.
 template <class Solver>
-void solve_ldlt_columns(const Solver& ldlt, const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+void solve_ldlt_interleaved(const Solver& ldlt, double* Y)
 {
   const auto& L = ldlt.matrixL().nestedExpression();  // strictly lower part, by columns
-  if(B.cols() != 2 || L.innerNonZeroPtr()) {
-    X = ldlt.solve(B);
-    return;
-  }
-  // the two columns of a row side by side
-  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> y;
-  if(ldlt.permutationP().size() > 0) y = ldlt.permutationP() * B;
-  else y = B;  // natural ordering
-  double* Y = y.data();
   const Eigen::Index n = L.cols();
   const auto* outer = L.outerIndexPtr();
   const auto* inner = L.innerIndexPtr();
@@ -232,6 +223,25 @@ void solve_ldlt_columns(const Solver& ldlt, const Eigen::MatrixXd& B, Eigen::Mat
     Y[2 * j] = a;
     Y[2 * j + 1] = b;
   }
+}
+
+// X = A^-1 B with the factorisation of `ldlt`. A B of two columns (the u and
+// v of a flattening) is solved in one pass over L for each triangular solve
+// (`solve_ldlt_interleaved()`), where Eigen makes one per column; X is the
+// same to the last bit. Any other B, or an L not in compressed storage, goes
+// to Eigen's solve().
+template <class Solver>
+void solve_ldlt_columns(const Solver& ldlt, const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+{
+  if(B.cols() != 2 || ldlt.matrixL().nestedExpression().innerNonZeroPtr()) {
+    X = ldlt.solve(B);
+    return;
+  }
+  // the two columns of a row side by side
+  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> y;
+  if(ldlt.permutationP().size() > 0) y = ldlt.permutationP() * B;
+  else y = B;  // natural ordering
+  solve_ldlt_interleaved(ldlt, y.data());
   if(ldlt.permutationPinv().size() > 0) X = ldlt.permutationPinv() * y;
   else X = y;
 }
@@ -278,6 +288,9 @@ public:
   }
   const char* name() const { return m_name; }
 
+protected:
+  const EigenSolver* eigen_solver() const { return m_solver.get(); }
+
 private:
   std::unique_ptr<EigenSolver> m_solver;
   const char* m_name;
@@ -300,6 +313,33 @@ struct Simplicial_LDLT_solver
   {
     const internal::Ordering_cache_scope scope(m_orderings.get());
     return Eigen_symmetric_solver::factorize(lower);
+  }
+
+  /// after a successful `factorize()`: the position in the factorisation's
+  /// order of every row of the matrix (its fill-reducing permutation), or
+  /// `nullptr` where that order is the matrix's own
+  const int* order_of_rows() const
+  {
+    const auto* s = eigen_solver();
+    return s && s->permutationP().size() > 0 ? s->permutationP().indices().data() : nullptr;
+  }
+
+  /// solves for two right-hand sides at once, in place: `y` holds them row
+  /// by row (y[2 k] and y[2 k + 1] for the row at position k of the order of
+  /// `order_of_rows()`), and receives the solutions in the same layout. The
+  /// same numbers, to the last bit, as `solve()` of the two columns, without
+  /// permuting them; returns false without a factorisation of that size
+  /// or where a solution is not finite.
+  bool solve_in_order(double* y, std::size_t rows) const
+  {
+    const auto* s = eigen_solver();
+    if(!s || s->info() != Eigen::Success || static_cast<std::size_t>(s->rows()) != rows ||
+       s->matrixL().nestedExpression().innerNonZeroPtr())
+      return false;
+    internal::solve_ldlt_interleaved(*s, y);
+    for(std::size_t k = 0; k < 2 * rows; ++k)
+      if(!std::isfinite(y[k])) return false;
+    return true;
   }
 
 private:

@@ -28,10 +28,23 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_QD {
 namespace internal {
+
+// whether a solver offers `order_of_rows()` and `solve_in_order(y, rows)`
+// (see `Simplicial_LDLT_solver`)
+template <class Solver, class = void>
+struct Solves_in_order : std::false_type
+{};
+template <class Solver>
+struct Solves_in_order<Solver, std::void_t<decltype(std::declval<const Solver&>().order_of_rows()),
+                                           decltype(std::declval<const Solver&>().solve_in_order(
+                                               std::declval<double*>(), std::size_t()))>> : std::true_type
+{};
 
 template <class Solver>
 class Arap_optimizer
@@ -104,6 +117,18 @@ public:
     }
     const bool ok = m_solver.factorize(m_matrix);
     m_matrix = Eigen::SparseMatrix<double>();  // the solves need only the factor
+    if constexpr(Solves_in_order<Solver>::value) {
+      // the global step gathers its right-hand side in the factor's order
+      if(ok) {
+        const int* order = m_solver.order_of_rows();
+        m_slot.assign(m_nv, -1);
+        for(std::size_t i = 0; i < m_nv; ++i)
+          if(m_row[i] >= 0) m_slot[i] = order ? order[m_row[i]] : static_cast<int>(m_row[i]);
+        m_face_slot.resize(m_tri.size());
+        for(std::size_t f = 0; f < m_tri.size(); ++f)
+          for(int k = 0; k < 3; ++k) m_face_slot[f][k] = m_slot[m_tri[f][k]];
+      }
+    }
     return ok;
   }
 
@@ -157,6 +182,9 @@ public:
   // The positions that minimise the energy for the current rotations.
   bool global_step(const std::vector<Vector_2>& u, std::vector<Vector_2>& out)
   {
+    if constexpr(Solves_in_order<Solver>::value) {
+      if(m_unknowns > 0) return global_step_in_order(u, out);
+    }
     out = u;
     if(m_unknowns == 0) return true;
     Eigen::MatrixXd& B = m_rhs;  // kept between iterations: no allocation per step
@@ -218,6 +246,61 @@ public:
 
 private:
   typedef std::array<double, 4> Matrix_2;  // row by row
+
+  // `global_step()` with the right-hand side gathered directly in the order
+  // of the factor, its two columns side by side, and solved in place: each
+  // entry receives the same terms in the same order as in the general path,
+  // so the positions are the same to the last bit, without the two
+  // permutations of the right-hand side and the solution.
+  bool global_step_in_order(const std::vector<Vector_2>& u, std::vector<Vector_2>& out)
+  {
+    m_y.assign(2 * m_unknowns, 0.);
+    double* Y = m_y.data();
+    // w |(u_i - u_j) - t|^2, with the slots si and sj of i and j (-1 where fixed)
+    auto add_edge = [&](int si, int sj, std::size_t i, std::size_t j, double w, double tx, double ty) {
+      if(si >= 0) {
+        double* y = Y + 2 * si;
+        y[0] += w * tx;
+        y[1] += w * ty;
+        if(sj < 0) {
+          y[0] += w * u[j][0];
+          y[1] += w * u[j][1];
+        }
+      }
+      if(sj >= 0) {
+        double* y = Y + 2 * sj;
+        y[0] -= w * tx;
+        y[1] -= w * ty;
+        if(si < 0) {
+          y[0] += w * u[i][0];
+          y[1] += w * u[i][1];
+        }
+      }
+    };
+    for(std::size_t f = 0; f < m_tri.size(); ++f) {
+      const Matrix_2& T = m_target[f];
+      const std::array<int, 3>& slot = m_face_slot[f];
+      for(int k = 0; k < 3; ++k) {
+        const Vector_2& dx = m_dx[f][k];
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        add_edge(slot[a], slot[b], m_tri[f][a], m_tri[f][b], m_cot[f][k], T[0] * dx[0] + T[1] * dx[1],
+                 T[2] * dx[0] + T[3] * dx[1]);
+      }
+    }
+    if(m_lambda > 0)
+      for(std::size_t e = 0; e < m_border.size(); ++e) {
+        const std::size_t i = m_border[e][0], j = m_border[e][1];
+        const double dx = u[i][0] - u[j][0], dy = u[i][1] - u[j][1], n = std::sqrt(dx * dx + dy * dy);
+        if(n > 0) add_edge(m_slot[i], m_slot[j], i, j, m_lambda, m_length[e] * dx / n, m_length[e] * dy / n);
+      }
+    if(!m_solver.solve_in_order(Y, m_unknowns)) return false;
+    out.resize(m_nv);
+    for(std::size_t i = 0; i < m_nv; ++i) {
+      const int s = m_slot[i];
+      out[i] = s >= 0 ? Vector_2{Y[2 * s], Y[2 * s + 1]} : u[i];
+    }
+    return true;
+  }
 
   // The target of face f from M (held in its target) and the face's energy term.
   double target_and_energy(std::size_t f)
@@ -362,6 +445,12 @@ private:
   bool m_two_lanes = true;
   Eigen::MatrixXd m_rhs, m_solution;  // of the global step
   std::vector<long> m_row;
+  // with a solver that solves in its own order: the position of every
+  // vertex's row in that order (-1 where fixed), by vertex and by face corner,
+  // and the right-hand side in that order
+  std::vector<int> m_slot;
+  std::vector<std::array<int, 3>> m_face_slot;
+  std::vector<double> m_y;
   std::size_t m_unknowns = 0;
   double m_area = 0;
   Eigen::SparseMatrix<double> m_matrix;
