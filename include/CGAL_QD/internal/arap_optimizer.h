@@ -93,17 +93,17 @@ public:
   // their position (the border with FIXED, else one pinned vertex).
   bool factorize(const std::vector<char>& fixed)
   {
-    m_row.assign(m_nv, -1);
+    std::vector<long> row(m_nv, -1);  // the row of every vertex that moves
     m_unknowns = 0;
     for(std::size_t i = 0; i < m_nv; ++i)
-      if(!fixed[i]) m_row[i] = static_cast<long>(m_unknowns++);
+      if(!fixed[i]) row[i] = static_cast<long>(m_unknowns++);
     if(m_unknowns == 0) return true;
     {
       // freed before the factorisation: 144 bytes a face
       std::vector<Eigen::Triplet<double>> t;
       t.reserve(9 * m_tri.size() + 4 * m_border.size());
       auto add_edge = [&](std::size_t i, std::size_t j, double w) {
-        const long ri = m_row[i], rj = m_row[j];
+        const long ri = row[i], rj = row[j];
         if(ri >= 0) t.emplace_back(ri, ri, w);
         if(rj >= 0) t.emplace_back(rj, rj, w);
         if(ri >= 0 && rj >= 0) t.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), -w);
@@ -117,18 +117,18 @@ public:
     }
     const bool ok = m_solver.factorize(m_matrix);
     m_matrix = Eigen::SparseMatrix<double>();  // the solves need only the factor
+    // the slot of every vertex's row in the right-hand side of the global
+    // step: the factor's own order where the solver solves in it
+    const int* order = nullptr;
     if constexpr(Solves_in_order<Solver>::value) {
-      // the global step gathers its right-hand side in the factor's order
-      if(ok) {
-        const int* order = m_solver.order_of_rows();
-        m_slot.assign(m_nv, -1);
-        for(std::size_t i = 0; i < m_nv; ++i)
-          if(m_row[i] >= 0) m_slot[i] = order ? order[m_row[i]] : static_cast<int>(m_row[i]);
-        m_face_slot.resize(m_tri.size());
-        for(std::size_t f = 0; f < m_tri.size(); ++f)
-          for(int k = 0; k < 3; ++k) m_face_slot[f][k] = m_slot[m_tri[f][k]];
-      }
+      if(ok) order = m_solver.order_of_rows();
     }
+    m_slot.assign(m_nv, -1);
+    for(std::size_t i = 0; i < m_nv; ++i)
+      if(row[i] >= 0) m_slot[i] = order ? order[row[i]] : static_cast<int>(row[i]);
+    m_face_slot.resize(m_tri.size());
+    for(std::size_t f = 0; f < m_tri.size(); ++f)
+      for(int k = 0; k < 3; ++k) m_face_slot[f][k] = m_slot[m_tri[f][k]];
     return ok;
   }
 
@@ -179,54 +179,33 @@ public:
   // SSE2 is available; the same result, bit for bit)
   void set_two_lanes(bool on) { m_two_lanes = on; }
 
-  // The positions that minimise the energy for the current rotations.
+  // The positions that minimise the energy for the current rotations: the
+  // right-hand side is gathered in the slots of `factorize()`, its two
+  // columns side by side. A solver that solves in its own order does so in
+  // place (no permutation of the right-hand side and of the solution); any
+  // other gets the two columns. Each entry receives the same terms in the
+  // same order either way, so the positions are the same to the last bit.
   bool global_step(const std::vector<Vector_2>& u, std::vector<Vector_2>& out)
   {
+    out.resize(m_nv);
+    if(m_unknowns == 0) {
+      out = u;
+      return true;
+    }
+    gather_right_hand_side(u);
+    typedef Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> Rows;
+    Eigen::Map<Rows> y(m_y.data(), static_cast<Eigen::Index>(m_unknowns), 2);
     if constexpr(Solves_in_order<Solver>::value) {
-      if(m_unknowns > 0) return global_step_in_order(u, out);
+      if(!m_solver.solve_in_order(m_y.data(), m_unknowns)) return false;
+    } else {
+      m_rhs = y;  // kept between iterations: no allocation per step
+      if(!m_solver.solve(m_rhs, m_solution) || !m_solution.allFinite()) return false;
+      y = m_solution;
     }
-    out = u;
-    if(m_unknowns == 0) return true;
-    Eigen::MatrixXd& B = m_rhs;  // kept between iterations: no allocation per step
-    B.setZero(static_cast<Eigen::Index>(m_unknowns), 2);
-    auto add_edge = [&](std::size_t i, std::size_t j, double w, double tx, double ty) {
-      // w |(u_i - u_j) - t|^2
-      const long ri = m_row[i], rj = m_row[j];
-      if(ri >= 0) {
-        B(ri, 0) += w * tx;
-        B(ri, 1) += w * ty;
-        if(rj < 0) {
-          B(ri, 0) += w * u[j][0];
-          B(ri, 1) += w * u[j][1];
-        }
-      }
-      if(rj >= 0) {
-        B(rj, 0) -= w * tx;
-        B(rj, 1) -= w * ty;
-        if(ri < 0) {
-          B(rj, 0) += w * u[i][0];
-          B(rj, 1) += w * u[i][1];
-        }
-      }
-    };
-    for(std::size_t f = 0; f < m_tri.size(); ++f) {
-      const Matrix_2& T = m_target[f];
-      for(int k = 0; k < 3; ++k) {
-        const Vector_2& dx = m_dx[f][k];
-        add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k], T[0] * dx[0] + T[1] * dx[1],
-                 T[2] * dx[0] + T[3] * dx[1]);
-      }
+    for(std::size_t i = 0; i < m_nv; ++i) {
+      const int s = m_slot[i];
+      out[i] = s >= 0 ? Vector_2{m_y[2 * s], m_y[2 * s + 1]} : u[i];
     }
-    if(m_lambda > 0)
-      for(std::size_t e = 0; e < m_border.size(); ++e) {
-        const std::size_t i = m_border[e][0], j = m_border[e][1];
-        const double dx = u[i][0] - u[j][0], dy = u[i][1] - u[j][1], n = std::sqrt(dx * dx + dy * dy);
-        if(n > 0) add_edge(i, j, m_lambda, m_length[e] * dx / n, m_length[e] * dy / n);
-      }
-    Eigen::MatrixXd& X = m_solution;
-    if(!m_solver.solve(B, X) || !X.allFinite()) return false;
-    for(std::size_t i = 0; i < m_nv; ++i)
-      if(m_row[i] >= 0) out[i] = {X(m_row[i], 0), X(m_row[i], 1)};
     return true;
   }
 
@@ -247,12 +226,8 @@ public:
 private:
   typedef std::array<double, 4> Matrix_2;  // row by row
 
-  // `global_step()` with the right-hand side gathered directly in the order
-  // of the factor, its two columns side by side, and solved in place: each
-  // entry receives the same terms in the same order as in the general path,
-  // so the positions are the same to the last bit, without the two
-  // permutations of the right-hand side and the solution.
-  bool global_step_in_order(const std::vector<Vector_2>& u, std::vector<Vector_2>& out)
+  // the right-hand side of the global step for `u` into `m_y`, row by row in the slots
+  void gather_right_hand_side(const std::vector<Vector_2>& u)
   {
     m_y.assign(2 * m_unknowns, 0.);
     double* Y = m_y.data();
@@ -293,13 +268,6 @@ private:
         const double dx = u[i][0] - u[j][0], dy = u[i][1] - u[j][1], n = std::sqrt(dx * dx + dy * dy);
         if(n > 0) add_edge(m_slot[i], m_slot[j], i, j, m_lambda, m_length[e] * dx / n, m_length[e] * dy / n);
       }
-    if(!m_solver.solve_in_order(Y, m_unknowns)) return false;
-    out.resize(m_nv);
-    for(std::size_t i = 0; i < m_nv; ++i) {
-      const int s = m_slot[i];
-      out[i] = s >= 0 ? Vector_2{Y[2 * s], Y[2 * s + 1]} : u[i];
-    }
-    return true;
   }
 
   // The target of face f from M (held in its target) and the face's energy term.
@@ -443,11 +411,10 @@ private:
   double m_alpha;                  // area preservation
   std::vector<Matrix_2> m_target;  // every face's target map
   bool m_two_lanes = true;
-  Eigen::MatrixXd m_rhs, m_solution;  // of the global step
-  std::vector<long> m_row;
-  // with a solver that solves in its own order: the position of every
-  // vertex's row in that order (-1 where fixed), by vertex and by face corner,
-  // and the right-hand side in that order
+  Eigen::MatrixXd m_rhs, m_solution;  // of the global step, for a solver that takes columns
+  // the slot of every vertex's row in the global step's right-hand side (-1
+  // where fixed), by vertex and, read once per face in every iteration, by
+  // face corner; and that right-hand side, row by row
   std::vector<int> m_slot;
   std::vector<std::array<int, 3>> m_face_slot;
   std::vector<double> m_y;
