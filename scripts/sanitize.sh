@@ -17,6 +17,7 @@ cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Sanitize 
       -DCGAL_QD_BUILD_TESTS=ON -DBUILD_TESTING=ON -DCGAL_QD_BUILD_EXAMPLES=OFF \
       -DCGAL_QD_BUILD_BENCHMARK=OFF -DCGAL_QD_BUILD_SWEEP=OFF
 cmake --build "$build" -j "$(nproc)"
+echo "sanitize.sh: clang and the instrumented build took $SECONDS s"
 cd "$build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:check_initialization_order=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -14,5 +14,6 @@ done
 build=${CGAL_QD_BUILD_DIR:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_QD_BUILD_TESTS=ON -DBUILD_TESTING=ON -DCGAL_QD_BUILD_EXAMPLES=ON
 cmake --build "$build" -j "$(nproc)"
+echo "test.sh: dependencies and build took $SECONDS s"
 cd "$build"
 ctest --output-on-failure --no-tests=error -j "$(nproc)"

@@ -4,14 +4,17 @@
 // Robustness: inspection and repair of bad input, the file readers on
 // malformed and fuzzed files, random disk patches grown on real meshes, and
 // the invariance of flattening and segmentation under rigid motions and
-// uniform scales.
+// uniform scales. With --sweep as its first argument, the executable runs one
+// mesh of the robustness sweep instead (sweep_mesh.h).
 
 #define BOOST_TEST_MODULE robustness
+#define BOOST_TEST_NO_MAIN
 #include <boost/test/unit_test.hpp>
 #include <boost/mpl/list.hpp>
 
 #include "disk_patches.h"
 #include "mesh_generators.h"
+#include "sweep_mesh.h"
 #include "test_utils.h"
 
 #include <CGAL_QD/IO/read_mesh.h>
@@ -833,3 +836,9 @@ BOOST_AUTO_TEST_CASE(segmentation_is_invariant_under_exact_motions)
                                   << s.first.number_of_charts);
 }
 #endif
+
+int main(int argc, char* argv[])
+{
+  if(argc > 1 && std::string(argv[1]) == "--sweep") return qd_test::sweep_mesh(argc - 1, argv + 1);
+  return boost::unit_test::unit_test_main(&init_unit_test, argc, argv);
+}

@@ -13,7 +13,13 @@
 // rejected by the merging and counted in the last column).
 // It is 1 when a target is missed (the row says which), 2 on an exception.
 //
-// usage: sweep_mesh <mesh> | sweep_mesh --header
+// test_robustness runs it instead of its test cases when its first argument
+// is --sweep (the sweep shares the executable, and the compile, of the
+// robustness tests):
+// usage: test_robustness --sweep <mesh> | test_robustness --sweep --header
+
+#ifndef CGAL_QD_TEST_SWEEP_MESH_H
+#define CGAL_QD_TEST_SWEEP_MESH_H
 
 #include "disk_patches.h"
 
@@ -29,6 +35,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,17 +45,18 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <sys/resource.h>
-#include <vector>
+
+namespace qd_test {
+namespace sweep {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 
-namespace {
-
-std::string fixed(double x, int digits)
+inline std::string fixed(double x, int digits)
 {
   if(!std::isfinite(x)) return "NaN";
   char buffer[64];
@@ -56,13 +64,13 @@ std::string fixed(double x, int digits)
   return buffer;
 }
 
-double elapsed_ms(std::chrono::steady_clock::time_point since)
+inline double elapsed_ms(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
 // the faces of the largest component (by area)
-std::vector<face_descriptor> largest_component(const Mesh& tm)
+inline std::vector<face_descriptor> largest_component(const Mesh& tm)
 {
   std::vector<std::size_t> component(num_faces(tm), 0);
   const std::size_t n = CGAL::Polygon_mesh_processing::connected_components(
@@ -76,17 +84,19 @@ std::vector<face_descriptor> largest_component(const Mesh& tm)
   return members;
 }
 
-bool finite_uv(const std::vector<std::array<double, 2>>& uv)
+inline bool finite_uv(const std::vector<std::array<double, 2>>& uv)
 {
   for(const auto& p : uv)
     if(!std::isfinite(p[0]) || !std::isfinite(p[1])) return false;
   return true;
 }
 
-} // namespace
+} // namespace sweep
 
-int main(int argc, char** argv)
+// argv[0] is "--sweep"; argv[1] the mesh or --header
+inline int sweep_mesh(int argc, char** argv)
 {
+  using namespace sweep;
   if(argc == 2 && std::string(argv[1]) == "--header") {
     std::cout << "| mesh | faces | repairs | patch faces | loops | flattening | A % | L² | flips | overlap | Π_L | "
                  "flatten s | segmentation | charts | max A % | max L² | overlapping | segment s | total s | peak MB | targets |\n"
@@ -94,7 +104,7 @@ int main(int argc, char** argv)
     return EXIT_SUCCESS;
   }
   if(argc != 2) {
-    std::cerr << "usage: sweep_mesh <mesh> | sweep_mesh --header\n";
+    std::cerr << "usage: test_robustness --sweep <mesh> | test_robustness --sweep --header\n";
     return EXIT_FAILURE;
   }
   const std::string path = argv[1];
@@ -186,3 +196,7 @@ int main(int argc, char** argv)
   std::cout << row.str() << "\n";
   return missed.empty() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
+
+} // namespace qd_test
+
+#endif // CGAL_QD_TEST_SWEEP_MESH_H
