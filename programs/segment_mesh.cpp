@@ -342,6 +342,9 @@ int main(int argc, char** argv)
                 << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units, pdf, pattern.seam_allowance, viewer})
                        .dump(2)
                 << "\n");
+    if(!pages && pages.status == CGAL_QD::Error_code::INVALID_ARGUMENT && pages.number_of_pages >= pattern.max_pages)
+      return fail("the patterns would take " + std::to_string(pages.number_of_pages) + " pages or more (at most " +
+                  std::to_string(pattern.max_pages) + "): give a smaller --size or --scale");
     if(!ok || !files.commit()) return fail("cannot write into '" + o.out_dir + "'");
     std::ostringstream message;
     message << "  wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage << "), patterns.svg"
@@ -354,7 +357,9 @@ int main(int argc, char** argv)
     if(pattern.scale == 0 && pattern.model_size == 0) message << "; --size or --scale to change";
     if(pages.notches > 0) message << ", " << pages.notches << " notches";
     if(pages.oversized_charts > 0)
-      message << ", " << pages.oversized_charts << (pages.oversized_charts == 1 ? " piece" : " pieces") << " larger than a page";
+      message << ", " << pages.oversized_charts << (pages.oversized_charts == 1 ? " piece" : " pieces")
+              << " larger than a page, printed in parts on " << pages.part_pages
+              << " pages: cut along the grey frames and match the half diamonds";
     message << "), segmentation.svg" << (viewer ? ", viewer.html (open it in a browser)" : "")
             << " and report.json into " << dir.string() << "\n";
     // the order in which to join the pieces, as on the pattern's last page

@@ -117,6 +117,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"model_size", number(p.model_size)},
                      {"reduced_to_fit", p.reduced_to_fit},
                      {"oversized_pieces", p.oversized_charts},
+                     {"part_pages", p.part_pages},
                      {"notches", p.notches},
                      {"seam_allowance", number(patterns.seam_allowance)},
                      {"pdf", patterns.pdf}};

@@ -263,6 +263,21 @@ struct Drawn_pattern
   double page_width = 0, page_height = 0;
 };
 
+// the group of every piece of a pattern: on its page, or, for a piece larger
+// than a page, defined once and shown in parts
+// (patterns_print_a_piece_larger_than_a_page_in_parts)
+std::vector<const boost::property_tree::ptree*> piece_groups(const boost::property_tree::ptree& svg)
+{
+  std::vector<const boost::property_tree::ptree*> groups;
+  for(const auto& child : svg) {
+    if(child.first == "g" && child.second.get<std::string>("<xmlattr>.class") != "part") groups.push_back(&child.second);
+    if(child.first == "defs")
+      for(const auto& def : child.second)
+        if(def.first == "g") groups.push_back(&def.second);
+  }
+  return groups;
+}
+
 Drawn_pattern parse_pattern(std::istream& in, const Surface_mesh& tm, double scale, std::size_t pages)
 {
   Drawn_pattern d;
@@ -276,8 +291,8 @@ Drawn_pattern parse_pattern(std::istream& in, const Surface_mesh& tm, double sca
     d.page_height = h / pages;
   }
   std::vector<Surface_mesh::Vertex_index> vs(vertices(tm).begin(), vertices(tm).end());
-  for(const auto& group : svg) {
-    if(group.first != "g") continue;
+  for(const boost::property_tree::ptree* g : piece_groups(svg)) {
+    const auto group = std::make_pair(std::string("g"), *g);
     BOOST_TEST(group.second.get<std::string>("<xmlattr>.class") == "piece");
     Drawn_piece piece;
     piece.chart = group.second.get<std::size_t>("<xmlattr>.data-chart");
@@ -448,7 +463,8 @@ BOOST_AUTO_TEST_CASE(patterns_take_a_model_size_and_units)
   pr = QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
   BOOST_REQUIRE(pr);
   BOOST_TEST(pr.oversized_charts > 0u);
-  BOOST_TEST(pr.number_of_pages >= pr.oversized_charts);  // each on pages of its own
+  BOOST_TEST(pr.part_pages >= 2 * pr.oversized_charts);  // each in parts, on pages of their own
+  BOOST_TEST(pr.number_of_pages > pr.part_pages);
 
   // in inches, on a letter page: 200 mm is 7.87 in
   options = QD::IO::Pattern_options();
@@ -460,6 +476,131 @@ BOOST_AUTO_TEST_CASE(patterns_take_a_model_size_and_units)
   if(!pr.reduced_to_fit) BOOST_TEST(pr.model_size == 200 / 25.4, tt::tolerance(1e-12));
   BOOST_TEST(ss.str().find("width=\"8.5000in\"") != std::string::npos);
   expect_pieces_apart_within_margins(parse_pattern(ss, s.tm, pr.scale, pr.number_of_pages), options.page_margin);
+}
+
+// A piece larger than a page, in parts: every part on a page of its own,
+// framed by the page's printable area, the windows of a piece side by side on
+// one grid; every line of the piece in a window printed; two half diamonds
+// numbered alike across every line where two printed parts meet
+BOOST_AUTO_TEST_CASE(patterns_print_a_piece_larger_than_a_page_in_parts)
+{
+  const Segmented& s = meshes().back();
+  const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+  QD::IO::Pattern_options options;
+  options.model_size = 1000;  // a metre: pieces larger than an A4 page
+  std::stringstream ss;
+  const QD::IO::Pattern_result pr =
+      QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+  BOOST_REQUIRE(pr);
+  BOOST_REQUIRE(pr.oversized_charts > 0u);
+  BOOST_TEST(pr.part_pages >= 2 * pr.oversized_charts);
+  boost::property_tree::ptree tree;
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+  const auto& svg = tree.get_child("svg");
+  const double w = options.page_width, h = options.page_height, m = options.page_margin;
+  const double uw = w - 2 * m, uh = h - 2 * m;
+  // the pieces defined once, with their lines and marks
+  struct Defined
+  {
+    std::vector<std::array<double, 4>> lines;
+    std::vector<std::array<double, 2>> marks;  // centres
+    std::map<std::string, int> mark_labels;
+  };
+  std::map<std::size_t, Defined> defined;
+  std::map<std::string, std::array<double, 4>> clips;
+  for(const auto& child : svg) {
+    if(child.first != "defs") continue;
+    for(const auto& def : child.second) {
+      if(def.first == "clipPath") {
+        const auto& r = def.second.get_child("rect");
+        clips[def.second.get<std::string>("<xmlattr>.id")] = {{r.get<double>("<xmlattr>.x"), r.get<double>("<xmlattr>.y"),
+                                                                r.get<double>("<xmlattr>.width"),
+                                                                r.get<double>("<xmlattr>.height")}};
+        continue;
+      }
+      if(def.first != "g") continue;
+      Defined& d = defined[def.second.get<std::size_t>("<xmlattr>.data-chart")];
+      for(const auto& e : def.second) {
+        const std::string cls = e.second.get<std::string>("<xmlattr>.class", "");
+        if(e.first == "line")
+          d.lines.push_back({{e.second.get<double>("<xmlattr>.x1"), e.second.get<double>("<xmlattr>.y1"),
+                              e.second.get<double>("<xmlattr>.x2"), e.second.get<double>("<xmlattr>.y2")}});
+        if(e.first == "polygon" && cls == "mark") {
+          std::istringstream pts(e.second.get<std::string>("<xmlattr>.points"));
+          std::array<double, 2> c{{0, 0}};
+          std::string xy;
+          for(int k = 0; k < 4 && pts >> xy; ++k)
+            c[0] += std::stod(xy.substr(0, xy.find(','))) / 4, c[1] += std::stod(xy.substr(xy.find(',') + 1)) / 4;
+          d.marks.push_back(c);
+        }
+        if(e.first == "text" && cls == "mark") ++d.mark_labels[e.second.data()];
+      }
+    }
+  }
+  BOOST_TEST(defined.size() == pr.oversized_charts);
+  // the parts
+  std::set<std::size_t> pages;
+  std::map<std::size_t, std::vector<std::array<double, 4>>> windows;  // by chart: x, y, width, height
+  std::size_t frames = 0;
+  for(const auto& child : svg) {
+    if(child.first == "rect" && child.second.get<std::string>("<xmlattr>.class") == "frame") ++frames;
+    if(child.first != "g" || child.second.get<std::string>("<xmlattr>.class") != "part") continue;
+    const auto& g = child.second;
+    const std::size_t page = g.get<std::size_t>("<xmlattr>.data-page"), k = g.get<std::size_t>("<xmlattr>.data-chart");
+    BOOST_TEST(pages.insert(page).second, "two parts on page " << page);
+    BOOST_TEST(page < pr.number_of_pages);
+    std::array<double, 4> window;
+    std::istringstream(g.get<std::string>("<xmlattr>.data-window")) >> window[0] >> window[1] >> window[2] >> window[3];
+    BOOST_TEST(window[2] == uw, tt::tolerance(1e-6));
+    BOOST_TEST(window[3] == uh, tt::tolerance(1e-6));
+    // the clip: the printable area of its page
+    std::string clip = g.get<std::string>("<xmlattr>.clip-path");
+    clip = clip.substr(5, clip.size() - 6);  // url(#...)
+    BOOST_REQUIRE(clips.count(clip) == 1u);
+    const std::array<double, 4>& c = clips[clip];
+    BOOST_TEST(c[0] == m, tt::tolerance(1e-6));
+    BOOST_TEST(c[1] == page * h + m, tt::tolerance(1e-6));
+    BOOST_TEST(c[2] == uw, tt::tolerance(1e-6));
+    BOOST_TEST(c[3] == uh, tt::tolerance(1e-6));
+    // the piece moved so that its window is that area
+    std::string use = g.get<std::string>("use.<xmlattr>.transform");
+    double dx = 0, dy = 0;
+    std::istringstream(use.substr(use.find('(') + 1)) >> dx >> dy;
+    BOOST_TEST(window[0] + dx == m, tt::tolerance(1e-4));
+    BOOST_TEST(window[1] + dy == page * h + m, tt::tolerance(1e-4));
+    windows[k].push_back(window);
+  }
+  BOOST_TEST(pages.size() == pr.part_pages);
+  BOOST_TEST(frames == pr.part_pages);
+  for(const auto& entry : defined) {
+    const std::vector<std::array<double, 4>>& ws = windows[entry.first];
+    BOOST_REQUIRE(!ws.empty());
+    // one grid of windows, the page's printable area each
+    for(const auto& a : ws) {
+      const double cx = (a[0] - ws.front()[0]) / uw, cy = (a[1] - ws.front()[1]) / uh;
+      BOOST_TEST(std::abs(cx - std::round(cx)) < 1e-6);
+      BOOST_TEST(std::abs(cy - std::round(cy)) < 1e-6);
+    }
+    auto inside = [&](double x, double y, double slack) {
+      for(const auto& a : ws)
+        if(x >= a[0] - slack && x <= a[0] + a[2] + slack && y >= a[1] - slack && y <= a[1] + a[3] + slack) return true;
+      return false;
+    };
+    for(const auto& l : entry.second.lines) {
+      BOOST_TEST(inside(l[0], l[1], 1e-3), "piece " << entry.first << ": a line at " << l[0] << ", " << l[1] << " is printed on no page");
+      BOOST_TEST(inside(l[2], l[3], 1e-3));
+    }
+    // every mark on a line between two printed windows; every label twice
+    BOOST_TEST(!entry.second.marks.empty());
+    for(const auto& c : entry.second.marks) {
+      std::size_t holding = 0;
+      for(const auto& a : ws)
+        if(c[0] >= a[0] - 1e-3 && c[0] <= a[0] + a[2] + 1e-3 && c[1] >= a[1] - 1e-3 && c[1] <= a[1] + a[3] + 1e-3) ++holding;
+      BOOST_TEST(holding == 2u, "a mark of piece " << entry.first << " at " << c[0] << ", " << c[1] << " in " << holding << " windows");
+    }
+    BOOST_TEST(entry.second.mark_labels.size() == entry.second.marks.size());
+    for(const auto& label : entry.second.mark_labels) BOOST_TEST(label.second == 2, label.first);
+  }
 }
 
 // the order in which to join the pieces: outward from the largest, every piece
@@ -635,11 +776,10 @@ BOOST_AUTO_TEST_CASE(pattern_notches_match_on_both_sides_of_every_seam)
     std::map<std::pair<std::string, int>, int> sides;  // (seam, number) -> notches drawn
     std::map<std::string, int> largest;                 // seam -> its largest notch number
     std::size_t notches = 0;
-    for(const auto& group : tree.get_child("svg")) {
-      if(group.first != "g") continue;
+    for(const boost::property_tree::ptree* group : piece_groups(tree.get_child("svg"))) {
       std::vector<std::array<double, 4>> cuts;
       std::vector<std::array<double, 2>> starts;
-      for(const auto& child : group.second) {
+      for(const auto& child : *group) {
         const auto& node = child.second;
         if(child.first != "line") continue;
         const std::array<double, 4> xy = {node.get<double>("<xmlattr>.x1"), node.get<double>("<xmlattr>.y1"),
@@ -689,11 +829,11 @@ BOOST_AUTO_TEST_CASE(pattern_seam_allowance_is_its_width_from_the_stitch_line)
     std::size_t outlines = 0;
     double nearest_low = 1e30, nearest_high = 0, inside = 1e30;
     std::vector<std::array<double, 4>> boxes;  // of every piece's outer outline
-    for(const auto& group : tree.get_child("svg")) {
-      if(group.first != "g") continue;
+    BOOST_TEST(pr.oversized_charts == 0u);  // every piece on one page: the boxes below are comparable
+    for(const boost::property_tree::ptree* group : piece_groups(tree.get_child("svg"))) {
       std::vector<Segment> stitch, cut;
       std::vector<std::array<double, 2>> outline_points;
-      for(const auto& child : group.second) {
+      for(const auto& child : *group) {
         const auto& node = child.second;
         const std::string cls = node.get<std::string>("<xmlattr>.class", "");
         if(child.first == "line" && cls == "cut")
@@ -773,6 +913,22 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   bad = QD::IO::Pattern_options();
   bad.seam_allowance = std::numeric_limits<double>::quiet_NaN();
   expect_refused(bad);
+  // a model a kilometre long, or a scale near the largest double: more pages
+  // than `max_pages`, refused before anything is drawn
+  for(double scale : {0., 1e300}) {
+    bad = QD::IO::Pattern_options();
+    bad.model_size = scale > 0 ? 0. : 1e6;
+    bad.scale = scale;
+    const QD::IO::Pattern_result pr = QD::IO::write_patterns_SVG(
+        ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv, s.result.seam_edges, bad);
+    BOOST_TEST((pr.status == QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST(pr.number_of_pages >= bad.max_pages);
+  }
+  bad = QD::IO::Pattern_options();
+  bad.max_pages = 0;
+  BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                         s.result.seam_edges, bad)
+                  .status == QD::Error_code::INVALID_ARGUMENT));
   BOOST_TEST(ss.str().empty());
 }
 
@@ -858,21 +1014,29 @@ BOOST_AUTO_TEST_CASE(pdf_patterns_refuse_bad_input_and_say_when_they_cannot_writ
               QD::Error_code::CANNOT_WRITE));
 }
 
-// A 1 x 1 square at 100 mm per unit, printed to pixels by poppler at 254 dpi
-// (10 pixels per millimetre): its cut lines span 100 mm
-BOOST_AUTO_TEST_CASE(pdf_pattern_prints_at_true_scale)
+// the grey pixels of a binary PGM file (as pdftoppm -gray writes it), row by row
+std::vector<unsigned char> read_pgm(const std::filesystem::path& file, int& width, int& height)
 {
-  if(std::system("pdftoppm -v > /dev/null 2>&1") != 0) {
-    BOOST_TEST_MESSAGE("pdftoppm (poppler-utils) is not installed: the printed size is not checked");
-    return;
-  }
+  std::ifstream pgm(file, std::ios::binary);
+  std::string magic;
+  int max = 0;
+  BOOST_REQUIRE(pgm >> magic >> width >> height >> max);
+  pgm.get();
+  BOOST_REQUIRE(magic == "P5");
+  std::vector<unsigned char> pixels(std::size_t(width) * height);
+  BOOST_REQUIRE(pgm.read(reinterpret_cast<char*>(pixels.data()), std::streamsize(pixels.size())));
+  return pixels;
+}
+
+// a 1 x 1 square in one chart, its UVs its x and y
+Surface_mesh unit_square(Chart_map& chart, std::vector<std::array<double, 2>>& uv)
+{
   Surface_mesh tm;
   const auto v0 = tm.add_vertex(Epick::Point_3(0, 0, 0)), v1 = tm.add_vertex(Epick::Point_3(1, 0, 0)),
              v2 = tm.add_vertex(Epick::Point_3(1, 1, 0)), v3 = tm.add_vertex(Epick::Point_3(0, 1, 0));
   tm.add_face(v0, v1, v2);
   tm.add_face(v0, v2, v3);
-  Chart_map chart;
-  std::vector<std::array<double, 2>> uv(6);
+  uv.assign(6, {{0, 0}});
   for(auto f : faces(tm)) {
     chart[f] = 0;
     int c = 0;
@@ -881,40 +1045,130 @@ BOOST_AUTO_TEST_CASE(pdf_pattern_prints_at_true_scale)
       uv[3 * std::size_t(f) + c++] = {{p.x(), p.y()}};
     }
   }
-  QD::IO::Pattern_options options;
-  options.scale = 100;
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cgal_qd_pdf_scale";
+  return tm;
+}
+
+// the box of the pixels darker than 80 (the black cut lines, not the grey
+// page numbers, chart ids, frames and marks): left, right, top, bottom
+std::array<int, 4> dark_box(const std::vector<unsigned char>& pixels, int width, int height)
+{
+  std::array<int, 4> box = {width, -1, height, -1};
+  for(int y = 0; y < height; ++y)
+    for(int x = 0; x < width; ++x)
+      if(pixels[std::size_t(y) * width + x] < 80)
+        box = {std::min(box[0], x), std::max(box[1], x), std::min(box[2], y), std::max(box[3], y)};
+  return box;
+}
+
+// `options`' pattern of the chart of `tm` as a PDF in a fresh temporary
+// directory `name`, printed by poppler at `dpi` (gray, DIR/square-N.pgm; the
+// first page only, or every page); an empty path where pdftoppm is not installed
+std::filesystem::path print_pattern(const Surface_mesh& tm, Chart_map& chart, const std::vector<std::array<double, 2>>& uv,
+                                    const QD::IO::Pattern_options& options, int dpi, const std::string& name,
+                                    bool every_page)
+{
+  if(std::system("pdftoppm -v > /dev/null 2>&1") != 0) {
+    BOOST_TEST_MESSAGE("pdftoppm (poppler-utils) is not installed: the printed pattern is not checked");
+    return {};
+  }
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   {
     std::ofstream out(dir / "square.pdf", std::ios::binary);
     BOOST_REQUIRE(QD::IO::write_patterns_PDF(out, tm, boost::make_assoc_property_map(chart), uv,
                                              std::vector<Surface_mesh::Edge_index>(), options));
   }
-  const std::string command = "pdftoppm -gray -r 254 -f 1 -l 1 '" + (dir / "square.pdf").string() + "' '" +
-                              (dir / "square").string() + "'";
+  const std::string command = "pdftoppm -gray -r " + std::to_string(dpi) + (every_page ? "" : " -f 1 -l 1") + " '" +
+                              (dir / "square.pdf").string() + "' '" + (dir / "square").string() + "'";
   BOOST_REQUIRE(std::system(command.c_str()) == 0);
-  std::ifstream pgm(dir / "square-1.pgm", std::ios::binary);
-  std::string magic;
-  int width = 0, height = 0, max = 0;
-  BOOST_REQUIRE(pgm >> magic >> width >> height >> max);
-  pgm.get();
-  BOOST_REQUIRE(magic == "P5");
-  std::vector<unsigned char> pixels(std::size_t(width) * height);
-  BOOST_REQUIRE(pgm.read(reinterpret_cast<char*>(pixels.data()), std::streamsize(pixels.size())));
+  return dir;
+}
+
+// A 1 x 1 square at 100 mm per unit, printed to pixels by poppler at 254 dpi
+// (10 pixels per millimetre): its cut lines span 100 mm
+BOOST_AUTO_TEST_CASE(pdf_pattern_prints_at_true_scale)
+{
+  Chart_map chart;
+  std::vector<std::array<double, 2>> uv;
+  const Surface_mesh tm = unit_square(chart, uv);
+  QD::IO::Pattern_options options;
+  options.scale = 100;
+  const std::filesystem::path dir = print_pattern(tm, chart, uv, options, 254, "cgal_qd_pdf_scale", false);
+  if(dir.empty()) return;
+  int width = 0, height = 0;
+  const std::vector<unsigned char> pixels = read_pgm(dir / "square-1.pgm", width, height);
   // the page: 210 x 297 mm
   BOOST_TEST(std::abs(width - 2100) <= 1);
   BOOST_TEST(std::abs(height - 2970) <= 1);
   // the cut lines are black; the page number and the chart id are grey
-  int left = width, right = -1, top = height, bottom = -1;
-  for(int y = 0; y < height; ++y)
-    for(int x = 0; x < width; ++x)
-      if(pixels[std::size_t(y) * width + x] < 80)
-        left = std::min(left, x), right = std::max(right, x), top = std::min(top, y), bottom = std::max(bottom, y);
+  const auto [left, right, top, bottom] = dark_box(pixels, width, height);
   BOOST_TEST_MESSAGE("the square prints " << (right - left + 1) / 10. << " x " << (bottom - top + 1) / 10.
                                            << " mm, lines included");
   // 100 mm and the 0.25 mm line: 1002.5 pixels, within 0.3 mm
   BOOST_TEST(std::abs(right - left + 1 - 1002.5) <= 3);
   BOOST_TEST(std::abs(bottom - top + 1 - 1002.5) <= 3);
+  std::filesystem::remove_all(dir);
+}
+
+// The same square at 400 mm per unit, larger than an A4 page: printed by
+// poppler at 127 dpi (5 pixels per millimetre), its parts' printable areas
+// laid side by side as their rows and columns say give the square, 400 mm
+// wide and high; nothing is printed in a part's margins but its caption
+BOOST_AUTO_TEST_CASE(pdf_parts_of_a_large_piece_join_at_true_scale)
+{
+  Chart_map chart;
+  std::vector<std::array<double, 2>> uv;
+  const Surface_mesh tm = unit_square(chart, uv);
+  QD::IO::Pattern_options options;
+  options.scale = 400;
+  std::stringstream svg;
+  const QD::IO::Pattern_result pr = QD::IO::write_patterns_SVG(svg, tm, boost::make_assoc_property_map(chart), uv,
+                                                               std::vector<Surface_mesh::Edge_index>(), options);
+  BOOST_REQUIRE(pr);
+  BOOST_TEST(pr.oversized_charts == 1u);
+  BOOST_TEST(pr.part_pages == 6u);  // 406 x 406 mm with the spacing: 3 columns and 2 rows of 190 x 277 mm
+  BOOST_REQUIRE(pr.number_of_pages < 10u);  // pdftoppm numbers them with one digit
+  const std::filesystem::path dir = print_pattern(tm, chart, uv, options, 127, "cgal_qd_pdf_parts", true);
+  if(dir.empty()) return;
+  boost::property_tree::ptree tree;
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(svg, tree));
+  const int margin = 50, uw = 950, uh = 1385;  // 10 mm, 190 mm, 277 mm
+  const int columns = 3, rows = 2;
+  std::vector<unsigned char> whole(std::size_t(columns * uw) * (rows * uh), 255);
+  std::size_t parts = 0;
+  for(const auto& child : tree.get_child("svg")) {
+    if(child.first != "g" || child.second.get<std::string>("<xmlattr>.class") != "part") continue;
+    const int page = child.second.get<int>("<xmlattr>.data-page"), row = child.second.get<int>("<xmlattr>.data-row"),
+              column = child.second.get<int>("<xmlattr>.data-column");
+    BOOST_REQUIRE(row < rows);
+    BOOST_REQUIRE(column < columns);
+    int width = 0, height = 0;
+    const std::vector<unsigned char> pixels =
+        read_pgm(dir / ("square-" + std::to_string(page + 1) + ".pgm"), width, height);
+    BOOST_REQUIRE(std::abs(width - 1050) <= 1);  // 210 x 297 mm
+    BOOST_REQUIRE(std::abs(height - 1485) <= 1);
+    std::size_t in_margins = 0;
+    for(int y = 0; y < height; ++y)
+      for(int x = 0; x < width; ++x) {
+        const unsigned char v = pixels[std::size_t(y) * width + x];
+        const bool in_window = x >= margin && x < margin + uw && y >= margin && y < margin + uh;
+        if(in_window)
+          whole[std::size_t(row * uh + y - margin) * (columns * uw) + column * uw + x - margin] = v;
+        else if(v < 80 && y >= margin)  // the caption is in the top margin
+          ++in_margins;
+      }
+    BOOST_TEST(in_margins == 0u, "page " << page + 1 << " prints " << in_margins << " dark pixels in its margins");
+    ++parts;
+  }
+  BOOST_TEST(parts == 6u);
+  // the cut lines are black; the marks, frames, page numbers and chart id are grey
+  const auto [left, right, top, bottom] = dark_box(whole, columns * uw, rows * uh);
+  BOOST_TEST_MESSAGE("the parts join into a square of " << (right - left + 1) / 5. << " x " << (bottom - top + 1) / 5.
+                                                         << " mm, lines included");
+  // 400 mm and the 0.25 mm line: 2001.25 pixels, within 0.6 mm
+  BOOST_TEST(std::abs(right - left + 1 - 2001.25) <= 3);
+  BOOST_TEST(std::abs(bottom - top + 1 - 2001.25) <= 3);
   std::filesystem::remove_all(dir);
 }
 #endif // CGAL_QD_HAS_CAIRO

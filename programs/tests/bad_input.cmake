@@ -83,6 +83,7 @@ set(option_cases
   "--size 200mm --scale 3|--size excludes --scale"
   "--scale 0|--scale: '0' is not a positive number"
   "--page a9|--page: a9 not in"
+  "--size 100000000mm|the patterns would take [0-9]+ pages or more [(]at most 1000[)]: give a smaller --size or --scale"
 )
 set(k 0)
 foreach(case IN LISTS option_cases)

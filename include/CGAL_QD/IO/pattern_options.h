@@ -69,6 +69,10 @@ struct Pattern_options
   double seam_allowance = 0;
   /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
   bool assembly_page = true;
+  /// the most pages a pattern may take: at a scale that would need more (pieces larger than a
+  /// page take a page per part), nothing is drawn and the writers return `INVALID_ARGUMENT`,
+  /// with `Pattern_result::number_of_pages` at least the pages the layout needs
+  std::size_t max_pages = 1000;
 };
 
 /// \ingroup PkgCGAL_QDRef
@@ -145,8 +149,10 @@ struct Pattern_result
   bool reduced_to_fit = false;
   std::size_t number_of_pages = 0;
   std::size_t number_of_charts = 0;
-  /// charts larger than a page (after turning them): each gets pages of its own and overflows their frames
+  /// charts larger than a page (after turning them): each is printed in parts, a page's printable area
+  /// each, on pages of its own, with marks to join them
   std::size_t oversized_charts = 0;
+  std::size_t part_pages = 0;  ///< the pages of those parts (a part that holds nothing of its piece is left out)
   std::size_t cut_edges = 0;    ///< edges on the charts' borders, each drawn once per side
   std::size_t seam_labels = 0;  ///< labels of seam curves, each drawn on both sides
   std::size_t fold_lines = 0;

@@ -62,6 +62,65 @@ inline void stroke_lines(cairo_t* cr, const Pattern_drawing::Piece& piece, Patte
   if(any) cairo_stroke(cr);
 }
 
+// everything drawn for one piece, in drawing units
+template <class Drawing>
+void draw_piece(cairo_t* cr, const typename Drawing::Piece& piece, const Drawing& d)
+{
+  const double line = d.line_width;
+  const double mountain[4] = {12 * line, 4 * line, 2 * line, 4 * line}, valley[2] = {8 * line, 4 * line};
+  cairo_set_line_width(cr, 0.6 * line);
+  for(const auto& t : piece.tabs) {
+    cairo_move_to(cr, t[0][0], t[0][1]);
+    for(int c = 1; c < 4; ++c) cairo_line_to(cr, t[c][0], t[c][1]);
+    cairo_close_path(cr);
+    cairo_set_source_rgb(cr, 0.933, 0.933, 0.933);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.467, 0.467, 0.467);
+    cairo_stroke(cr);
+  }
+  cairo_set_line_width(cr, 0.8 * line);
+  cairo_set_source_rgb(cr, 0.8, 0, 0);
+  cairo_set_dash(cr, mountain, 4, 0);
+  stroke_lines(cr, piece, Drawing::MOUNTAIN);
+  cairo_set_source_rgb(cr, 0, 0, 0.8);
+  cairo_set_dash(cr, valley, 2, 0);
+  stroke_lines(cr, piece, Drawing::VALLEY);
+  cairo_set_dash(cr, nullptr, 0, 0);
+  cairo_set_line_width(cr, line);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  for(const auto& outline : piece.allowance) {  // the cut line, outside the stitch line
+    for(std::size_t i = 0; i < outline.size(); ++i) (i ? cairo_line_to : cairo_move_to)(cr, outline[i][0], outline[i][1]);
+    cairo_close_path(cr);
+    cairo_stroke(cr);
+  }
+  if(d.seam_allowance > 0) {  // the stitch line, dashed
+    const double stitch[2] = {6 * line, 3 * line};
+    cairo_set_line_width(cr, 0.6 * line);
+    cairo_set_dash(cr, stitch, 2, 0);
+  }
+  stroke_lines(cr, piece, Drawing::CUT);
+  cairo_set_dash(cr, nullptr, 0, 0);
+  cairo_set_line_width(cr, line);
+  for(const auto& l : piece.notches) {
+    cairo_move_to(cr, l.a[0], l.a[1]);
+    cairo_line_to(cr, l.b[0], l.b[1]);
+  }
+  if(!piece.notches.empty()) cairo_stroke(cr);
+  for(const auto& t : piece.notch_labels) show_centred_text(cr, t);
+  for(const auto& t : piece.labels) show_centred_text(cr, t);
+  // the diamonds where the parts of a piece larger than a page meet, dark grey
+  cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+  for(const auto& m : piece.marks) {
+    cairo_move_to(cr, m[0][0], m[0][1]);
+    for(int c = 1; c < 4; ++c) cairo_line_to(cr, m[c][0], m[c][1]);
+    cairo_close_path(cr);
+    cairo_fill(cr);
+  }
+  for(const auto& t : piece.mark_labels) show_centred_text(cr, t);
+  cairo_set_source_rgb(cr, 0.533, 0.533, 0.533);
+  show_centred_text(cr, piece.id);
+}
+
 } // namespace internal
 
 namespace IO {
@@ -72,8 +131,9 @@ namespace IO {
 /// lines, tabs and labels; see there), one PDF page per page of
 /// `options.page_width` x `options.page_height`, so that a length of 100 mm on
 /// the pattern prints as 100 mm with the printer's scaling off ("actual
-/// size"). A piece larger than a page continues on the pages after its first,
-/// as it overflows its frame in the SVG.
+/// size"). A piece larger than a page is printed in parts, each on a page of
+/// its own within a grey frame, with half diamonds to join them (see
+/// `write_patterns_SVG()`).
 ///
 /// \param out the stream written to (binary)
 /// \param tm the triangle mesh
@@ -106,18 +166,6 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  const double mountain[4] = {12 * line, 4 * line, 2 * line, 4 * line}, valley[2] = {8 * line, 4 * line};
-  // a piece is drawn on every page it reaches: its own, and the next ones when it is
-  // larger than a page; its top and bottom
-  std::vector<std::array<double, 2>> reach;
-  for(const Drawing::Piece& piece : d.pieces) {
-    double top = piece.id.at[1], bottom = piece.id.at[1];
-    for(const Drawing::Line& l : piece.lines)
-      top = (std::min)({top, l.a[1], l.b[1]}), bottom = (std::max)({bottom, l.a[1], l.b[1]});
-    for(const auto& t : piece.tabs)
-      for(const auto& p : t) top = (std::min)(top, p[1]), bottom = (std::max)(bottom, p[1]);
-    reach.push_back({{top, bottom}});
-  }
   for(std::size_t page = 0; page < d.number_of_pages; ++page) {
     cairo_save(cr);
     cairo_scale(cr, points, points);
@@ -127,53 +175,33 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
     internal::show_centred_text(cr, {{{w / 2, page * ph + ph - d.page_margin / 2}},
                                      (std::min)(font * 0.8, 0.8 * d.page_margin), 0.,
                                      "page " + std::to_string(page + 1) + " of " + std::to_string(d.number_of_pages)});
-    for(std::size_t k = 0; k < d.pieces.size(); ++k) {
-      const Drawing::Piece& piece = d.pieces[k];
-      if(reach[k][1] < page * ph || reach[k][0] > (page + 1) * ph) continue;
-      cairo_set_line_width(cr, 0.6 * line);
-      for(const auto& t : piece.tabs) {
-        cairo_move_to(cr, t[0][0], t[0][1]);
-        for(int c = 1; c < 4; ++c) cairo_line_to(cr, t[c][0], t[c][1]);
-        cairo_close_path(cr);
-        cairo_set_source_rgb(cr, 0.933, 0.933, 0.933);
-        cairo_fill_preserve(cr);
-        cairo_set_source_rgb(cr, 0.467, 0.467, 0.467);
-        cairo_stroke(cr);
+    for(const Drawing::Piece& piece : d.pieces) {
+      if(piece.parts.empty()) {
+        if(piece.page == page) internal::draw_piece(cr, piece, d);
+        continue;
       }
-      cairo_set_line_width(cr, 0.8 * line);
-      cairo_set_source_rgb(cr, 0.8, 0, 0);
-      cairo_set_dash(cr, mountain, 4, 0);
-      internal::stroke_lines(cr, piece, Drawing::MOUNTAIN);
-      cairo_set_source_rgb(cr, 0, 0, 0.8);
-      cairo_set_dash(cr, valley, 2, 0);
-      internal::stroke_lines(cr, piece, Drawing::VALLEY);
-      cairo_set_dash(cr, nullptr, 0, 0);
-      cairo_set_line_width(cr, line);
-      cairo_set_source_rgb(cr, 0, 0, 0);
-      for(const auto& outline : piece.allowance) {  // the cut line, outside the stitch line
-        for(std::size_t i = 0; i < outline.size(); ++i)
-          (i ? cairo_line_to : cairo_move_to)(cr, outline[i][0], outline[i][1]);
-        cairo_close_path(cr);
-        cairo_stroke(cr);
+      // a part of a piece larger than a page: its window, moved onto the page
+      for(const internal::Pattern_part& part : piece.parts) {
+        if(part.page != page) continue;
+        cairo_save(cr);
+        cairo_rectangle(cr, part.low[0] + part.shift[0], part.low[1] + part.shift[1], part.size[0], part.size[1]);
+        cairo_clip(cr);
+        cairo_translate(cr, part.shift[0], part.shift[1]);
+        internal::draw_piece(cr, piece, d);
+        cairo_restore(cr);
       }
-      if(d.seam_allowance > 0) {  // the stitch line, dashed
-        const double stitch[2] = {6 * line, 3 * line};
-        cairo_set_line_width(cr, 0.6 * line);
-        cairo_set_dash(cr, stitch, 2, 0);
-      }
-      internal::stroke_lines(cr, piece, Drawing::CUT);
-      cairo_set_dash(cr, nullptr, 0, 0);
-      cairo_set_line_width(cr, line);
-      for(const Drawing::Line& l : piece.notches) {
-        cairo_move_to(cr, l.a[0], l.a[1]);
-        cairo_line_to(cr, l.b[0], l.b[1]);
-      }
-      if(!piece.notches.empty()) cairo_stroke(cr);
-      for(const Drawing::Text& t : piece.notch_labels) internal::show_centred_text(cr, t);
-      for(const Drawing::Text& t : piece.labels) internal::show_centred_text(cr, t);
-      cairo_set_source_rgb(cr, 0.533, 0.533, 0.533);
-      internal::show_centred_text(cr, piece.id);
     }
+    // the frames and captions of the pages of parts
+    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr, 0.5 * line);
+    for(const auto& f : d.frames)
+      if(f[1] >= page * ph && f[1] < (page + 1) * ph) {
+        cairo_rectangle(cr, f[0], f[1], f[2], f[3]);
+        cairo_stroke(cr);
+      }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    for(const Drawing::Text& t : d.captions)
+      if(t.at[1] >= page * ph && t.at[1] < (page + 1) * ph) internal::show_centred_text(cr, t);
     cairo_set_source_rgb(cr, 0, 0, 0);
     for(const Drawing::Text& t : d.assembly)
       if(t.at[1] >= page * ph && t.at[1] < (page + 1) * ph) internal::show_centred_text(cr, t);

@@ -54,10 +54,20 @@ namespace IO {
 ///   in one SVG, each page framed and numbered), what does not fit going on to
 ///   the next page, never within `page_margin` of a page's edge nor within
 ///   `spacing` (and the tabs) of each other; a chart larger than a page (at a
-///   scale or a model size given) gets as many pages of its own as its height
-///   needs and overflows their frames (print it tiled, or lower the scale);
+///   scale or a model size given) is turned the way that needs the fewest
+///   parts and printed in parts: its box cut into windows the size of a page's
+///   printable area, each window that holds some of it on a page of its own,
+///   within a grey frame (`<rect class="frame">`), with a caption in the top
+///   margin (`<text class="caption">`); where two parts meet, two diamonds
+///   numbered alike lie across the line between them, half on each page
+///   (`<polygon class="mark">`), so that a person cuts one page along its
+///   frame, lays the two edge to edge and matches the halves;
 /// - every piece is one group, `<g class="piece" data-chart="k" data-page="p">`,
-///   holding all that is drawn for it;
+///   holding all that is drawn for it; a piece in parts is defined once in
+///   `<defs>` (`id="piece-k"`) and shown by one group per part, `<g
+///   class="part" data-chart="k" data-page="p" data-row="r" data-column="c"
+///   data-window="x y w h">` (the window in the piece's coordinates), clipped
+///   to the printable area of its page;
 /// - the layout shows the outer side of the surface (a chart is drawn as seen
 ///   from the side its face normals point to);
 /// - cut lines (solid, class `cut`) on every border edge of a chart: a seam or a
@@ -109,8 +119,10 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
   Pattern_result result = internal::draw_pattern(tm, face_chart, corner_uv, seam_edges, options, np, d);
   if(!result) return result;
   const double w = d.page_width, ph = d.page_height, line = d.line_width, mm = d.millimetre, font = d.font_size;
+  const bool any_parts = result.part_pages > 0;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << internal::svg_number(w) << d.units
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\""
+      << (any_parts ? " xmlns:xlink=\"http://www.w3.org/1999/xlink\"" : "") << " width=\"" << internal::svg_number(w) << d.units
       << "\" height=\"" << internal::svg_number(ph * d.number_of_pages) << d.units
       << "\" viewBox=\"0 0 " << internal::svg_number(w) << ' '
       << internal::svg_number(ph * d.number_of_pages) << "\">\n"
@@ -131,15 +143,20 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       << "}.page{fill:none;stroke:#ccc;stroke-width:" << n_(0.3 * mm) << "}"
       << "text{font-family:sans-serif;text-anchor:middle;dominant-baseline:middle}"
       << (d.assembly.empty() ? "" : "text.assembly{text-anchor:start}")
-      << (result.notches == 0 ? "" : ".notch{stroke:#000;stroke-width:" + n_(line) + "}") << "</style>\n";
+      << (result.notches == 0 ? "" : ".notch{stroke:#000;stroke-width:" + n_(line) + "}")
+      << (result.part_pages == 0 ? "" : ".frame{fill:none;stroke:#999;stroke-width:" + n_(0.5 * line) + "}.mark{fill:#595959}")
+      << "</style>\n";
   for(std::size_t p = 0; p < d.number_of_pages; ++p)
     out << "<rect class=\"page\" x=\"0\" y=\"" << n_(p * ph) << "\" width=\"" << n_(w) << "\" height=\"" << n_(ph)
         << "\"/>\n<text class=\"page\" x=\"" << n_(w / 2) << "\" y=\"" << n_(p * ph + ph - d.page_margin / 2)
         << "\" font-size=\"" << n_((std::min)(font * 0.8, 0.8 * d.page_margin)) << "\">page " << p + 1
         << " of " << d.number_of_pages << "</text>\n";
 
-  for(const internal::Pattern_drawing::Piece& piece : d.pieces) {
-    out << "<g class=\"piece\" data-chart=\"" << piece.chart << "\" data-page=\"" << piece.page << "\">\n";
+  // a piece larger than a page is defined once and shown through the windows of its parts
+  auto write_piece = [&](const internal::Pattern_drawing::Piece& piece) {
+    out << "<g class=\"piece\"";
+    if(!piece.parts.empty()) out << " id=\"piece-" << piece.chart << "\"";
+    out << " data-chart=\"" << piece.chart << "\" data-page=\"" << piece.page << "\">\n";
     for(const auto& t : piece.tabs)
       out << "<polygon class=\"tab\" points=\"" << n_(t[0][0]) << ',' << n_(t[0][1]) << ' ' << n_(t[1][0]) << ','
           << n_(t[1][1]) << ' ' << n_(t[2][0]) << ',' << n_(t[2][1]) << ' ' << n_(t[3][0]) << ',' << n_(t[3][1])
@@ -169,8 +186,47 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       out << "<text class=\"seam\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
           << n_(t.size) << "\" transform=\"rotate(" << n_(t.angle) << ' ' << n_(t.at[0]) << ' ' << n_(t.at[1])
           << ")\">" << t.text << "</text>\n";
+    for(const auto& m : piece.marks)
+      out << "<polygon class=\"mark\" points=\"" << n_(m[0][0]) << ',' << n_(m[0][1]) << ' ' << n_(m[1][0]) << ','
+          << n_(m[1][1]) << ' ' << n_(m[2][0]) << ',' << n_(m[2][1]) << ' ' << n_(m[3][0]) << ',' << n_(m[3][1])
+          << "\"/>\n";
+    for(const internal::Pattern_drawing::Text& t : piece.mark_labels)
+      out << "<text class=\"mark\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
+          << n_(t.size) << "\">" << t.text << "</text>\n";
     out << "<text class=\"chart\" x=\"" << n_(piece.id.at[0]) << "\" y=\"" << n_(piece.id.at[1])
         << "\" font-size=\"" << n_(piece.id.size) << "\" fill=\"#888\">" << piece.id.text << "</text>\n</g>\n";
+  };
+  for(const internal::Pattern_drawing::Piece& piece : d.pieces)
+    if(piece.parts.empty()) write_piece(piece);
+  if(any_parts) {
+    out << "<defs>\n";
+    for(const internal::Pattern_drawing::Piece& piece : d.pieces) {
+      if(piece.parts.empty()) continue;
+      write_piece(piece);
+      for(std::size_t i = 0; i < piece.parts.size(); ++i) {
+        const internal::Pattern_part& part = piece.parts[i];
+        out << "<clipPath id=\"part-" << piece.chart << '-' << i << "\"><rect x=\"" << n_(part.low[0] + part.shift[0])
+            << "\" y=\"" << n_(part.low[1] + part.shift[1]) << "\" width=\"" << n_(part.size[0]) << "\" height=\""
+            << n_(part.size[1]) << "\"/></clipPath>\n";
+      }
+    }
+    out << "</defs>\n";
+    // every part: the piece moved by the part's shift, seen through its window on its page
+    for(const internal::Pattern_drawing::Piece& piece : d.pieces)
+      for(std::size_t i = 0; i < piece.parts.size(); ++i) {
+        const internal::Pattern_part& part = piece.parts[i];
+        out << "<g class=\"part\" data-chart=\"" << piece.chart << "\" data-page=\"" << part.page << "\" data-row=\""
+            << part.row << "\" data-column=\"" << part.column << "\" data-window=\"" << n_(part.low[0]) << ' '
+            << n_(part.low[1]) << ' ' << n_(part.size[0]) << ' ' << n_(part.size[1]) << "\" clip-path=\"url(#part-"
+            << piece.chart << '-' << i << ")\"><use xlink:href=\"#piece-" << piece.chart
+            << "\" transform=\"translate(" << n_(part.shift[0]) << ' ' << n_(part.shift[1]) << ")\"/></g>\n";
+      }
+    for(const auto& f : d.frames)
+      out << "<rect class=\"frame\" x=\"" << n_(f[0]) << "\" y=\"" << n_(f[1]) << "\" width=\"" << n_(f[2])
+          << "\" height=\"" << n_(f[3]) << "\"/>\n";
+    for(const internal::Pattern_drawing::Text& t : d.captions)
+      out << "<text class=\"caption\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
+          << n_(t.size) << "\">" << t.text << "</text>\n";
   }
   // the assembly order, on the last page
   for(const internal::Pattern_drawing::Text& t : d.assembly)

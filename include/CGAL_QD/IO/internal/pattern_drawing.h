@@ -7,12 +7,14 @@
 // What a printed pattern shows, before it is written in a file format: the
 // scale, the pages, and for every piece its glue tabs, cut and fold lines,
 // seam labels and id, in drawing units on pages stacked downwards (page p
-// spans y in [p h, (p + 1) h]), y pointing down. IO/patterns_svg.h and
-// IO/patterns_pdf.h write it.
+// spans y in [p h, (p + 1) h]), y pointing down; a piece larger than a page
+// in parts (pattern_tiles.h). IO/patterns_svg.h and IO/patterns_pdf.h write it.
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/IO/internal/assembly_order.h>
+#include <CGAL_QD/IO/internal/assembly_page.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
+#include <CGAL_QD/IO/internal/pattern_tiles.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
 #include <CGAL_QD/IO/pattern_options.h>
 #ifdef CGAL_QD_HAS_CLIPPER
@@ -73,6 +75,11 @@ struct Pattern_drawing
     std::vector<Text> notch_labels;       // their numbers
     std::vector<std::vector<P2>> allowance;  // the outlines of the seam allowance: the cut lines then
     Text id;                              // the chart id, at the centre of its box
+    // a piece larger than a page: the parts printed (its drawing is shown only
+    // through them), and the diamonds across the lines where they meet
+    std::vector<Pattern_part> parts;
+    std::vector<std::array<P2, 4>> marks;
+    std::vector<Text> mark_labels;
   };
   std::string units;
   double page_width = 0, page_height = 0, page_margin = 0;
@@ -83,61 +90,10 @@ struct Pattern_drawing
   double millimetre = 1;  // in drawing units
   std::vector<Piece> pieces;  // in drawing order
   std::vector<Text> assembly;  // the lines of the assembly page
+  // on the pages of parts: the frame of the printable area (x, y, width, height) and a caption
+  std::vector<std::array<double, 4>> frames;
+  std::vector<Text> captions;
 };
-
-// the lines of the assembly page, `page` of `d`, in columns, made smaller
-// until they fit
-inline void lay_out_assembly_page(const std::vector<IO::Assembly_step>& steps,
-                                  const std::vector<IO::Pattern_seam>& seams, const std::string& units,
-                                  std::size_t page, Pattern_drawing& d)
-{
-  std::vector<std::string> steps_text;
-  for(std::size_t i = 0; i < steps.size(); ++i) steps_text.push_back(IO::assembly_step_text(steps, i));
-  // then the seams whose sides differ, each with its two lengths
-  bool eased = false;
-  for(const IO::Pattern_seam& s : seams) {
-    if(s.matched) continue;
-    if(!eased) steps_text.push_back("Ease in the longer side of these seams, whose sides differ by more than 0.5 %:");
-    eased = true;
-    steps_text.push_back(IO::pattern_seam_text(s, units));
-  }
-  const double m = d.page_margin, title = 1.2 * d.font_size, top = d.page_height * page + m + 2 * title;
-  const double width = d.page_width - 2 * m, height = d.page_height - 2 * m - 2 * title;
-  // a step longer than its column goes on, indented, after a comma
-  auto wrap = [&](std::size_t max_chars) {
-    std::vector<std::pair<bool, std::string>> lines;  // (goes on, text)
-    for(std::string t : steps_text) {
-      bool goes_on = false;
-      while(t.size() > max_chars) {
-        const std::size_t cut = t.rfind(", ", max_chars - 1);
-        if(cut == std::string::npos || cut < 8) break;
-        lines.emplace_back(goes_on, t.substr(0, cut + 1));
-        t = t.substr(cut + 2);
-        goes_on = true;
-      }
-      lines.emplace_back(goes_on, t);
-    }
-    return lines;
-  };
-  double size = d.font_size;
-  std::vector<std::pair<bool, std::string>> lines;
-  std::size_t columns = 1, rows = 1;
-  for(int tries = 0; tries < 30; ++tries, size *= 0.9) {
-    rows = (std::max)(std::size_t(1), static_cast<std::size_t>(height / (1.5 * size)));
-    for(columns = 1; columns <= 3; ++columns) {
-      lines = wrap((std::max)(std::size_t(12), static_cast<std::size_t>(width / columns / (0.6 * size)) - 4));
-      if(lines.size() <= columns * rows) break;
-    }
-    if(columns <= 3) break;
-    columns = 3;
-  }
-  d.assembly.push_back({{{m, d.page_height * page + m + title}}, title, 0.,
-                        "Assembly: join the pieces in this order, sewing or gluing the seams named", false});
-  for(std::size_t i = 0; i < lines.size(); ++i)
-    d.assembly.push_back({{{m + (i / rows) * width / columns + (lines[i].first ? 3 * size : 0.),
-                            top + (i % rows + 0.5) * 1.5 * size}},
-                          size, 0., lines[i].second, false});
-}
 
 // computes the drawing of `write_patterns_SVG()` and `write_patterns_PDF()`
 // (see there); nothing is drawn unless the result's status is OK
@@ -285,6 +241,10 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                                options.page_margin, pad);
   const std::vector<internal::Piece_placement>& place = layout.pieces;
   result.number_of_pages = layout.number_of_pages;
+  if(layout.number_of_pages + (options.assembly_page ? 1 : 0) > options.max_pages) {
+    result.status = Error_code::INVALID_ARGUMENT;  // a scale far beyond the pages
+    return result;
+  }
   result.number_of_charts = layout.order.size();
   result.oversized_charts = layout.oversized;
   // the drawing position of a corner: scaled, rotated, y pointing down (so the
@@ -425,10 +385,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.millimetre = mm;
   drawing.pieces.clear();
   drawing.assembly.clear();
-  if(options.assembly_page && !result.assembly.empty()) {
-    lay_out_assembly_page(result.assembly, result.seams, options.units, result.number_of_pages, drawing);
-    drawing.number_of_pages = ++result.number_of_pages;
-  }
+  drawing.frames.clear();
+  drawing.captions.clear();
   const double ph = options.page_height;
   for(std::size_t k : layout.order) {
     const internal::Piece_placement& p = place[k];
@@ -505,6 +463,19 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     // the chart id at the centre of its box
     piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
                 (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
+  }
+  // the pieces larger than a page in parts, on the pages after the others;
+  // then the assembly page
+  std::size_t pages = layout.number_of_pages;
+  for(std::size_t k : layout.order) pages -= place[k].rows * place[k].columns > 1 ? place[k].rows * place[k].columns : 0;
+  pages += cut_into_parts(drawing, place, pages,
+                          {{options.page_width - 2 * options.page_margin, options.page_height - 2 * options.page_margin}},
+                          (std::min)(3 * mm, (std::min)(options.page_width, options.page_height) / 60));
+  for(const Pattern_drawing::Piece& piece : drawing.pieces) result.part_pages += piece.parts.size();
+  result.number_of_pages = drawing.number_of_pages = pages;
+  if(options.assembly_page && !result.assembly.empty()) {
+    lay_out_assembly_page(result.assembly, result.seams, options.units, result.number_of_pages, drawing);
+    drawing.number_of_pages = ++result.number_of_pages;
   }
   result.scale *= unit_scale;  // drawing units per unit of the input mesh
   return result;

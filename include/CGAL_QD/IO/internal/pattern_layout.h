@@ -23,12 +23,14 @@ namespace internal {
 
 // where one piece goes: its points turned by `angle` lie in [low, low + size / scale]
 // (mesh units), drawn with the top-left corner of its box (`size`, drawing
-// units, with padding) at `at` on page `page`
+// units, with padding) at `at` on page `page`. A piece larger than a page is
+// printed in parts: `rows` x `columns` windows of the page's printable area
+// (pattern_tiles.h), from page `page` on.
 struct Piece_placement
 {
   double angle = 0;
   std::array<double, 2> low{{0, 0}}, size{{0, 0}}, at{{0, 0}};
-  std::size_t page = 0;
+  std::size_t page = 0, rows = 1, columns = 1;
   bool used = false;
 };
 
@@ -37,7 +39,7 @@ struct Page_layout
   std::vector<Piece_placement> pieces;  // by chart id
   std::vector<std::size_t> order;       // the charts in drawing order
   std::size_t number_of_pages = 0;
-  std::size_t oversized = 0;  // pieces larger than a page, on pages of their own
+  std::size_t oversized = 0;  // pieces larger than a page, printed in parts on pages of their own
 };
 
 // The largest scale (drawing units per mesh unit) at which every rectangle of
@@ -61,7 +63,8 @@ inline double largest_fitting_scale(const std::vector<Rectangle>& boxes, double 
 // an id without faces) at `scale` on pages of page_w x page_h with `margin`
 // free on every side, each box padded by `pad`: the tallest first, packed
 // bottom-left on a skyline page by page; a box larger than a page after the
-// others, on pages of its own.
+// others, turned the way that needs the fewest parts of a page's printable
+// area, on as many pages of its own as it has parts.
 inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std::vector<bool>& used, double scale,
                                   double page_w, double page_h, double margin, double pad)
 {
@@ -84,12 +87,22 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
     p.angle = r.angle;
     p.low = r.low;
     p.size = {{r.size[0] * scale + 2 * pad, r.size[1] * scale + 2 * pad}};
-    // lay it flat, or upright if it fits only so
+    // lay it flat, or upright if it fits only so; a piece larger than a page
+    // the way that cuts it into the fewest parts (upright on a tie if the page is)
     const bool fits = p.size[0] <= usable_w && p.size[1] <= usable_h;
     const bool fits_turned = p.size[1] <= usable_w && p.size[0] <= usable_h;
-    if((!fits && fits_turned) || (!fits && !fits_turned && p.size[0] > p.size[1] && usable_h > usable_w))
+    auto parts = [&](double w, double h) { return std::ceil(w / usable_w) * std::ceil(h / usable_h); };
+    const double flat = parts(p.size[0], p.size[1]), upright = parts(p.size[1], p.size[0]);
+    if((!fits && fits_turned) ||
+       (!fits && !fits_turned &&
+        (upright < flat || (upright == flat && p.size[0] > p.size[1] && usable_h > usable_w))))
       turn(p, r.size[1]);
-    if(p.size[0] > usable_w || p.size[1] > usable_h) ++layout.oversized;
+    if(p.size[0] > usable_w || p.size[1] > usable_h) {
+      ++layout.oversized;
+      // (a million at most each way: the caller refuses so many pages anyway)
+      p.columns = static_cast<std::size_t>((std::min)(std::ceil(p.size[0] / usable_w), 1e6));
+      p.rows = static_cast<std::size_t>((std::min)(std::ceil(p.size[1] / usable_h), 1e6));
+    }
     layout.order.push_back(k);
   }
   // the pieces that fit on a page, tallest first, page by page: each page
@@ -122,13 +135,14 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
     ++page;
     if(!progress) break;
   }
-  // a piece larger than a page: on pages of its own, as many as its height needs
+  // a piece larger than a page: at the top left of the printable area of its
+  // first page, its parts on pages of their own, row by row
   for(std::size_t k : layout.order) {
     Piece_placement& p = layout.pieces[k];
     if(p.size[0] <= usable_w && p.size[1] <= usable_h) continue;
     p.page = page;
     p.at = {{margin, margin}};
-    page += static_cast<std::size_t>(std::ceil((p.size[1] + 2 * margin) / page_h));
+    page += p.rows * p.columns;
   }
   layout.number_of_pages = page;
   return layout;
