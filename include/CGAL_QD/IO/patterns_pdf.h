@@ -183,22 +183,20 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
       // a part of a piece larger than a page: its window, moved onto the page
       for(const internal::Pattern_part& part : piece.parts) {
         if(part.page != page) continue;
+        const std::array<double, 4> frame = part.on_page();
         cairo_save(cr);
-        cairo_rectangle(cr, part.low[0] + part.shift[0], part.low[1] + part.shift[1], part.size[0], part.size[1]);
+        cairo_rectangle(cr, frame[0], frame[1], frame[2], frame[3]);
         cairo_clip(cr);
         cairo_translate(cr, part.shift[0], part.shift[1]);
         internal::draw_piece(cr, piece, d);
         cairo_restore(cr);
-      }
-    }
-    // the frames and captions of the pages of parts
-    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
-    cairo_set_line_width(cr, 0.5 * line);
-    for(const auto& f : d.frames)
-      if(f[1] >= page * ph && f[1] < (page + 1) * ph) {
-        cairo_rectangle(cr, f[0], f[1], f[2], f[3]);
+        cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);  // the frame, outside the clip
+        cairo_set_line_width(cr, 0.5 * line);
+        cairo_rectangle(cr, frame[0], frame[1], frame[2], frame[3]);
         cairo_stroke(cr);
       }
+    }
+    // the captions of the pages of parts
     cairo_set_source_rgb(cr, 0, 0, 0);
     for(const Drawing::Text& t : d.captions)
       if(t.at[1] >= page * ph && t.at[1] < (page + 1) * ph) internal::show_centred_text(cr, t);

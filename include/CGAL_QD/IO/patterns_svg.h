@@ -153,14 +153,20 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
         << " of " << d.number_of_pages << "</text>\n";
 
   // a piece larger than a page is defined once and shown through the windows of its parts
+  auto rect = [&](const std::array<double, 4>& r, const char* cls) {
+    return std::string("<rect") + (*cls ? std::string(" class=\"") + cls + "\"" : std::string()) + " x=\"" + n_(r[0]) +
+           "\" y=\"" + n_(r[1]) + "\" width=\"" + n_(r[2]) + "\" height=\"" + n_(r[3]) + "\"/>";
+  };
+  auto write_quad = [&](const std::array<std::array<double, 2>, 4>& q, const char* cls) {
+    out << "<polygon class=\"" << cls << "\" points=\"" << n_(q[0][0]) << ',' << n_(q[0][1]) << ' ' << n_(q[1][0])
+        << ',' << n_(q[1][1]) << ' ' << n_(q[2][0]) << ',' << n_(q[2][1]) << ' ' << n_(q[3][0]) << ','
+        << n_(q[3][1]) << "\"/>\n";
+  };
   auto write_piece = [&](const internal::Pattern_drawing::Piece& piece) {
     out << "<g class=\"piece\"";
     if(!piece.parts.empty()) out << " id=\"piece-" << piece.chart << "\"";
     out << " data-chart=\"" << piece.chart << "\" data-page=\"" << piece.page << "\">\n";
-    for(const auto& t : piece.tabs)
-      out << "<polygon class=\"tab\" points=\"" << n_(t[0][0]) << ',' << n_(t[0][1]) << ' ' << n_(t[1][0]) << ','
-          << n_(t[1][1]) << ' ' << n_(t[2][0]) << ',' << n_(t[2][1]) << ' ' << n_(t[3][0]) << ',' << n_(t[3][1])
-          << "\"/>\n";
+    for(const auto& t : piece.tabs) write_quad(t, "tab");
     for(const auto& outline : piece.allowance) {
       out << "<polygon class=\"allowance\" points=\"";
       for(std::size_t i = 0; i < outline.size(); ++i) out << (i ? " " : "") << n_(outline[i][0]) << ',' << n_(outline[i][1]);
@@ -186,10 +192,7 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       out << "<text class=\"seam\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
           << n_(t.size) << "\" transform=\"rotate(" << n_(t.angle) << ' ' << n_(t.at[0]) << ' ' << n_(t.at[1])
           << ")\">" << t.text << "</text>\n";
-    for(const auto& m : piece.marks)
-      out << "<polygon class=\"mark\" points=\"" << n_(m[0][0]) << ',' << n_(m[0][1]) << ' ' << n_(m[1][0]) << ','
-          << n_(m[1][1]) << ' ' << n_(m[2][0]) << ',' << n_(m[2][1]) << ' ' << n_(m[3][0]) << ',' << n_(m[3][1])
-          << "\"/>\n";
+    for(const auto& m : piece.marks) write_quad(m, "mark");
     for(const internal::Pattern_drawing::Text& t : piece.mark_labels)
       out << "<text class=\"mark\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
           << n_(t.size) << "\">" << t.text << "</text>\n";
@@ -203,12 +206,9 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
     for(const internal::Pattern_drawing::Piece& piece : d.pieces) {
       if(piece.parts.empty()) continue;
       write_piece(piece);
-      for(std::size_t i = 0; i < piece.parts.size(); ++i) {
-        const internal::Pattern_part& part = piece.parts[i];
-        out << "<clipPath id=\"part-" << piece.chart << '-' << i << "\"><rect x=\"" << n_(part.low[0] + part.shift[0])
-            << "\" y=\"" << n_(part.low[1] + part.shift[1]) << "\" width=\"" << n_(part.size[0]) << "\" height=\""
-            << n_(part.size[1]) << "\"/></clipPath>\n";
-      }
+      for(std::size_t i = 0; i < piece.parts.size(); ++i)
+        out << "<clipPath id=\"part-" << piece.chart << '-' << i << "\">" << rect(piece.parts[i].on_page(), "")
+            << "</clipPath>\n";
     }
     out << "</defs>\n";
     // every part: the piece moved by the part's shift, seen through its window on its page
@@ -219,11 +219,9 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
             << part.row << "\" data-column=\"" << part.column << "\" data-window=\"" << n_(part.low[0]) << ' '
             << n_(part.low[1]) << ' ' << n_(part.size[0]) << ' ' << n_(part.size[1]) << "\" clip-path=\"url(#part-"
             << piece.chart << '-' << i << ")\"><use xlink:href=\"#piece-" << piece.chart
-            << "\" transform=\"translate(" << n_(part.shift[0]) << ' ' << n_(part.shift[1]) << ")\"/></g>\n";
+            << "\" transform=\"translate(" << n_(part.shift[0]) << ' ' << n_(part.shift[1]) << ")\"/></g>\n"
+            << rect(part.on_page(), "frame") << "\n";
       }
-    for(const auto& f : d.frames)
-      out << "<rect class=\"frame\" x=\"" << n_(f[0]) << "\" y=\"" << n_(f[1]) << "\" width=\"" << n_(f[2])
-          << "\" height=\"" << n_(f[3]) << "\"/>\n";
     for(const internal::Pattern_drawing::Text& t : d.captions)
       out << "<text class=\"caption\" x=\"" << n_(t.at[0]) << "\" y=\"" << n_(t.at[1]) << "\" font-size=\""
           << n_(t.size) << "\">" << t.text << "</text>\n";

@@ -90,9 +90,7 @@ struct Pattern_drawing
   double millimetre = 1;  // in drawing units
   std::vector<Piece> pieces;  // in drawing order
   std::vector<Text> assembly;  // the lines of the assembly page
-  // on the pages of parts: the frame of the printable area (x, y, width, height) and a caption
-  std::vector<std::array<double, 4>> frames;
-  std::vector<Text> captions;
+  std::vector<Text> captions;  // on the pages of parts, in the top margin
 };
 
 // computes the drawing of `write_patterns_SVG()` and `write_patterns_PDF()`
@@ -385,7 +383,6 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.millimetre = mm;
   drawing.pieces.clear();
   drawing.assembly.clear();
-  drawing.frames.clear();
   drawing.captions.clear();
   const double ph = options.page_height;
   for(std::size_t k : layout.order) {
@@ -466,8 +463,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   }
   // the pieces larger than a page in parts, on the pages after the others;
   // then the assembly page
-  std::size_t pages = layout.number_of_pages;
-  for(std::size_t k : layout.order) pages -= place[k].rows * place[k].columns > 1 ? place[k].rows * place[k].columns : 0;
+  std::size_t pages = layout.first_part_page;
   pages += cut_into_parts(drawing, place, pages,
                           {{options.page_width - 2 * options.page_margin, options.page_height - 2 * options.page_margin}},
                           (std::min)(3 * mm, (std::min)(options.page_width, options.page_height) / 60));

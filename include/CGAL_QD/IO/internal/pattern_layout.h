@@ -39,6 +39,7 @@ struct Page_layout
   std::vector<Piece_placement> pieces;  // by chart id
   std::vector<std::size_t> order;       // the charts in drawing order
   std::size_t number_of_pages = 0;
+  std::size_t first_part_page = 0;  // after the pages of the pieces that fit on one
   std::size_t oversized = 0;  // pieces larger than a page, printed in parts on pages of their own
 };
 
@@ -137,6 +138,7 @@ inline Page_layout lay_out_pieces(const std::vector<Rectangle>& boxes, const std
   }
   // a piece larger than a page: at the top left of the printable area of its
   // first page, its parts on pages of their own, row by row
+  layout.first_part_page = page;
   for(std::size_t k : layout.order) {
     Piece_placement& p = layout.pieces[k];
     if(p.size[0] <= usable_w && p.size[1] <= usable_h) continue;

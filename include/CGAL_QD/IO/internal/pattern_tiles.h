@@ -32,6 +32,8 @@ struct Pattern_part
 {
   std::size_t page = 0, row = 0, column = 0;
   std::array<double, 2> low{{0, 0}}, size{{0, 0}}, shift{{0, 0}};
+  // the window where it is printed (x, y, width, height): the page's printable area, framed
+  std::array<double, 4> on_page() const { return {{low[0] + shift[0], low[1] + shift[1], size[0], size[1]}}; }
 };
 
 // whether the segment a-b meets the box [low, low + size] (Liang and Barsky's clipping)
@@ -64,7 +66,7 @@ inline bool segment_meets_box(const std::array<double, 2>& a, const std::array<d
 // a tab or an outline of the piece on a page of its own from page
 // `first_page` on, row by row; draws the marks across the lines between two
 // parts printed (`Piece::marks`, `Piece::mark_labels`) and, on every page of a
-// part, its frame (`frames`) and a caption in the top margin (`captions`).
+// part, a caption in the top margin (`captions`).
 // `usable` is the printable area of a page, `mark` the half diagonal of a
 // diamond. Returns the number of pages used.
 template <class Drawing>
@@ -160,12 +162,11 @@ std::size_t cut_into_parts(Drawing& d, const std::vector<Piece_placement>& place
         if(r + 1 < p.rows && printed(r, c) && printed(r + 1, c))
           for(double f : {1. / 3, 2. / 3}) diamond({{low[0] + f * usable[0], low[1] + usable[1]}}, false);
       }
-    // the frame and the caption of every part's page
+    // the caption of every part's page
     const std::size_t n = piece.parts.size();
     for(std::size_t i = 0; i < n; ++i) {
       const Pattern_part& part = piece.parts[i];
       const double top = double(part.page) * ph;
-      d.frames.push_back({{margin, top + margin, usable[0], usable[1]}});
       const std::string text = "piece " + std::to_string(piece.chart) + ", part " + std::to_string(i + 1) + " of " +
                                std::to_string(n) + " (row " + std::to_string(part.row + 1) + ", column " +
                                std::to_string(part.column + 1) +
