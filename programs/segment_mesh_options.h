@@ -33,6 +33,7 @@ struct Options
   bool tabs = false;
   bool assembly_page = true;
   double fold_angle = 10;  // degrees
+  std::string min_fold_length = "5%";  // a length with its unit, or a share of the model's size
   std::string notches;  // the spacing of the notches, a length with its unit
   std::string seam_allowance;  // a length with its unit
   // the segmentation
@@ -150,6 +151,15 @@ inline void add_options(CLI::App& app, Options& o)
                  "180: none, for fabric)")
       ->type_name("DEGREES")
       ->check(CLI::Range(0., 180.))
+      ->group(pattern);
+  app.add_option("--min-fold-length", o.min_fold_length,
+                 "Draw fold lines where the edges that bend more than --fold-angle make a line at least LENGTH long "
+                 "on the page (10mm, 0.5in; a bare number is in --units; 5%: a twentieth of the model's largest "
+                 "dimension on the page, 10 mm at 200 mm, the same lines at every size), turning by at most 30 "
+                 "degrees from edge to edge, or a shorter one between the cut line and other fold lines; the others "
+                 "are small bends that paper takes by bending. 0: every edge that bends more than --fold-angle")
+      ->type_name("LENGTH")
+      ->default_str("5%")
       ->group(pattern);
   app.add_flag("!--no-assembly-page", o.assembly_page,
                "Leave out the last page, which lists the order in which to join the pieces")

@@ -33,8 +33,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -809,6 +811,87 @@ BOOST_AUTO_TEST_CASE(pattern_notches_match_on_both_sides_of_every_seam)
   }
 }
 
+namespace {
+
+// a 0.25 wide strip of 80 x 20 cells, one piece laid out as it lies in the
+// plane (its UVs are x and y), with its heights z
+struct Strip
+{
+  Surface_mesh tm;
+  Chart_map chart;
+  std::vector<std::array<double, 2>> uv;
+  explicit Strip(const std::function<double(double, double)>& z)
+  {
+    BOOST_REQUIRE(build(grid(80, 20, [&](double u, double v) { return P3{{u, 0.25 * v, z(u, v)}}; }), tm));
+    uv.assign(3 * num_faces(tm), {{0, 0}});
+    for(auto f : faces(tm)) {
+      chart[f] = 0;
+      int c = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+        uv[3 * std::size_t(f) + c++] = {{tm.point(target(h, tm)).x(), tm.point(target(h, tm)).y()}};
+    }
+  }
+  std::size_t fold_lines(double scale, double min_fold_length, double min_fold_share = 0) const
+  {
+    QD::IO::Pattern_options options;
+    options.scale = scale;
+    options.min_fold_length = min_fold_length;
+    options.min_fold_share = min_fold_share;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr = QD::IO::write_patterns_SVG(
+        ss, tm, boost::make_assoc_property_map(const_cast<Chart_map&>(chart)), uv,
+        std::vector<Surface_mesh::Edge_index>(), options);
+    BOOST_REQUIRE(pr);
+    // as many dashed lines in the SVG
+    std::size_t drawn = 0;
+    for(const std::string kind : {"class=\"mountain\"", "class=\"valley\""})
+      for(std::size_t at = ss.str().find(kind); at != std::string::npos; at = ss.str().find(kind, at + 1)) ++drawn;
+    BOOST_TEST(drawn == pr.fold_lines);
+    return pr.fold_lines;
+  }
+};
+
+} // namespace
+
+// fold lines are creases, not the small bends of a finely sampled surface: a
+// straight crease across the strip (its 20 edges bend by 17 degrees) is drawn
+// whole, 25 mm long, and at 7.5 mm too, since it runs from the cut line to the
+// cut line; of a strip whose heights are noise (edges bending by up to tens of
+// degrees, 1.25 mm long on the page) only a few chains that happen to line up
+// are drawn, the same at every size with the default share of the model's
+// size; with `min_fold_length` and `min_fold_share` 0 every edge beyond the
+// fold angle is drawn
+BOOST_AUTO_TEST_CASE(pattern_fold_lines_follow_creases_not_the_sampling)
+{
+  const Strip crease([](double u, double) { return 0.15 * std::abs(u - 0.5); });
+  BOOST_TEST(crease.fold_lines(100, 10) == 20u);
+  BOOST_TEST(crease.fold_lines(30, 10) == 20u);
+  BOOST_TEST(crease.fold_lines(100, 0) == 20u);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> height(0, 0.004);
+  const Strip noise([&](double, double) { return height(random); });
+  const std::size_t every = noise.fold_lines(100, 0), drawn = noise.fold_lines(100, 9);
+  const QD::IO::Pattern_options defaults;
+  BOOST_TEST(defaults.min_fold_length == 0.);
+  BOOST_TEST(defaults.min_fold_share == 0.05);
+  // a share of the model's size (the strip is 1 long): 9 mm at 200 mm, the
+  // same lines at 50 and 800 mm (not a whole number of the grid's edges,
+  // whose lines are whole numbers of them long)
+  const std::size_t at_200 = noise.fold_lines(200, 0, 0.045);
+  BOOST_TEST(at_200 == noise.fold_lines(200, 9));
+  BOOST_TEST(at_200 == noise.fold_lines(50, 0, 0.045));
+  BOOST_TEST(at_200 == noise.fold_lines(800, 0, 0.045));
+  BOOST_TEST(at_200 < noise.fold_lines(800, 9));
+  BOOST_TEST_MESSAGE("noise: " << drawn << " of " << every << " bending edges drawn as fold lines");
+  BOOST_TEST(every > 1000u);
+  BOOST_TEST(drawn * 10 < every);
+  // the same noise at 2 mm per mesh unit: every line is shorter than 9 mm, and
+  // only those between the cut line and other lines are drawn
+  const std::size_t small = noise.fold_lines(2, 9);
+  BOOST_TEST_MESSAGE("at 2 mm per mesh unit: " << small);
+  BOOST_TEST(small * 10 < every);
+}
+
 #ifdef CGAL_QD_HAS_CLIPPER
 // the seam allowance: every point of its outline is the allowance away from
 // the piece's border (the stitch line), and every point of the border at least
@@ -912,6 +995,16 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.seam_allowance = std::numeric_limits<double>::quiet_NaN();
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.min_fold_length = -1;
+  expect_refused(bad);
+  bad.min_fold_length = std::numeric_limits<double>::infinity();
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.min_fold_share = -0.1;
+  expect_refused(bad);
+  bad.min_fold_share = std::numeric_limits<double>::quiet_NaN();
   expect_refused(bad);
   // a model a kilometre long, or a scale near the largest double: more pages
   // than `max_pages`, refused before anything is drawn

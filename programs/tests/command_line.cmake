@@ -18,7 +18,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--min-fold-length LENGTH=5%" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--area-preservation ALPHA:0..1=0.5" "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
@@ -48,6 +48,9 @@ set(cases
   "--area-preservation nan|--area-preservation: 'nan' is not a number from 0 to 1"
   "--notches 0mm|--notches: '0mm' is not a positive length"
   "--fold-angle 200|--fold-angle: Value 200 not in range"
+  "--min-fold-length 5furlongs|--min-fold-length: '5furlongs' is not a length"
+  "--min-fold-length -1mm|--min-fold-length: '-1mm' is not a length"
+  "--min-fold-length 150%|--min-fold-length: '150%' is not a length"
   "--seam-allowance 6furlongs|--seam-allowance: '6furlongs' is not a positive length"
   "--out-dir|--out-dir"
 )

@@ -58,6 +58,20 @@ struct Pattern_options
   double tab_width = 5;
   /// interior edges whose dihedral angle exceeds this (radians) are fold lines
   double fold_angle = 0.1745329251994330;  // 10 degrees
+  /// the shortest fold line drawn, on the page; 0 (the default): `min_fold_share` of the model's
+  /// largest dimension on the page. The edges that bend more than `fold_angle` are chained into lines,
+  /// edge to edge through a vertex where the line turns by at most 30 degrees on the page (each edge
+  /// going on into the straightest edge of the same kind, mountain or valley), and a line shorter than
+  /// this on the page is drawn only where each of its ends lies on the piece's cut line or on another
+  /// line drawn (a crease across a narrow strip, or between two longer ones): on a fine mesh of a
+  /// smooth shape, those edges are mostly small bends of the sampling, scattered or side by side where
+  /// the surface curves, and the paper takes that shape by bending
+  double min_fold_length = 0;
+  /// with `min_fold_length` 0, the shortest fold line drawn as a share of the model's largest dimension
+  /// on the page (`Pattern_result::model_size`): 10 mm on a model printed 200 mm long, so that the
+  /// pattern shows the same fold lines at every size. With both 0, every edge that bends more than
+  /// `fold_angle` is drawn
+  double min_fold_share = 0.05;
   /// the largest height of the label text (0: from the page size); a piece's
   /// labels are made smaller where the piece is small
   double font_size = 0;
@@ -155,7 +169,7 @@ struct Pattern_result
   std::size_t part_pages = 0;  ///< the pages of those parts (a part that holds nothing of its piece is left out)
   std::size_t cut_edges = 0;    ///< edges on the charts' borders, each drawn once per side
   std::size_t seam_labels = 0;  ///< labels of seam curves, each drawn on both sides
-  std::size_t fold_lines = 0;
+  std::size_t fold_lines = 0;   ///< edges drawn as fold lines (see `Pattern_options::min_fold_length`)
   std::size_t tabs = 0;
   std::size_t notches = 0;  ///< on both sides of every seam, counted once per side
   /// the order in which to join the pieces, built outward from the largest (by 3D area): each step

@@ -88,7 +88,9 @@ namespace IO {
 ///   fractions of each side's length, about `notch_spacing` apart;
 /// - fold lines on interior edges whose dihedral angle exceeds `fold_angle`:
 ///   mountain folds (convex edges) dash-dotted in red, valley folds (concave)
-///   dashed in blue;
+///   dashed in blue; only where those edges make a line at least
+///   `min_fold_length` long on the page, or a shorter one between the cut line
+///   and other fold lines (see `Pattern_options::min_fold_length`);
 /// - the chart id at the centre of the chart's box;
 /// - unless `options.assembly_page` is false, a last page lists the order in
 ///   which to join the pieces (`Pattern_result::assembly`): outward from the

@@ -13,6 +13,7 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/IO/internal/assembly_order.h>
 #include <CGAL_QD/IO/internal/assembly_page.h>
+#include <CGAL_QD/IO/internal/fold_lines.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
@@ -144,7 +145,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                finite_at_least(options.tab_width, 0) && finite_at_least(options.page_margin, 0) &&
                finite_at_least(options.font_size, 0) && finite_at_least(options.notch_spacing, 0) &&
                finite_at_least(options.seam_allowance, 0) &&
-               std::isfinite(options.fold_angle) &&
+               std::isfinite(options.fold_angle) && finite_at_least(options.min_fold_length, 0) &&
+               finite_at_least(options.min_fold_share, 0) &&
                std::isfinite(options.page_width) && std::isfinite(options.page_height) &&
                options.page_width > 2 * options.page_margin && options.page_height > 2 * options.page_margin;
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
@@ -234,6 +236,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     }
   }
   result.model_size = result.scale * extent;
+  const double min_fold_length =
+      options.min_fold_length > 0 ? options.min_fold_length : options.min_fold_share * result.model_size;
   const internal::Page_layout layout =
       internal::lay_out_pieces(boxes, used, result.scale, options.page_width, options.page_height,
                                options.page_margin, pad);
@@ -405,7 +409,10 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       piece.tabs.push_back({{a, c1, c2, b}});
       ++result.tabs;
     }
-    // cut lines and fold lines
+    // cut lines, and the edges that bend more than the fold angle, of which
+    // those on fold lines long enough are drawn (fold_lines.h)
+    std::vector<internal::Fold_edge> folds;
+    std::vector<std::size_t> border;  // the vertices of the cut line
     for(std::size_t i : faces_of_chart[k]) {
       halfedge_descriptor h = halfedge(face_of[i], tm);
       for(int c = 0; c < 3; ++c, h = next(h, tm)) {
@@ -416,6 +423,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
           piece.lines.push_back({Pattern_drawing::CUT, a, b,
                                  {{vertex_number[get(vim, source(g, tm))], vertex_number[get(vim, target(g, tm))]}}});
           ++result.cut_edges;
+          border.push_back(static_cast<std::size_t>(get(vim, source(g, tm))));
+          border.push_back(static_cast<std::size_t>(get(vim, target(g, tm))));
           continue;
         }
         // an interior edge: draw it once, from the face with the smaller index
@@ -427,10 +436,18 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         const double above = (fb.centroid[0] - fa.centroid[0]) * fa.normal[0] +
                              (fb.centroid[1] - fa.centroid[1]) * fa.normal[1] +
                              (fb.centroid[2] - fa.centroid[2]) * fa.normal[2];
-        piece.lines.push_back({above > 0 ? Pattern_drawing::VALLEY : Pattern_drawing::MOUNTAIN, a, b, {{0, 0}}});
-        ++result.fold_lines;
+        folds.push_back({{{static_cast<std::size_t>(get(vim, source(g, tm))),
+                           static_cast<std::size_t>(get(vim, target(g, tm)))}},
+                         a, b, above > 0 ? Pattern_drawing::VALLEY : Pattern_drawing::MOUNTAIN});
       }
     }
+    std::sort(border.begin(), border.end());
+    const std::vector<char> on_line = internal::edges_on_fold_lines(folds, min_fold_length, border);
+    for(std::size_t q = 0; q < folds.size(); ++q)
+      if(on_line[q]) {
+        piece.lines.push_back({Pattern_drawing::Line_kind(folds[q].kind), folds[q].a, folds[q].b, {{0, 0}}});
+        ++result.fold_lines;
+      }
     // seam labels inside the piece, beside the middle edge of their curve
     const double label = (std::min)(font, side / 4);
     for(const auto& hl : labels_of_chart[k]) {
