@@ -605,6 +605,68 @@ BOOST_AUTO_TEST_CASE(patterns_print_a_piece_larger_than_a_page_in_parts)
   }
 }
 
+// a piece 300 x 100 mm needs two parts on A4 whichever way it is turned; the
+// grid of windows is placed so that neither is a sliver: each part holds at
+// least 45 % of the outline (half of it where the line between them is in the
+// middle), where the grid's first corner at the piece's leaves 152 mm of the
+// 800 to one of them
+BOOST_AUTO_TEST_CASE(patterns_print_no_sliver_of_a_piece_in_parts)
+{
+  Surface_mesh tm;
+  const auto v0 = tm.add_vertex(Epick::Point_3(0, 0, 0)), v1 = tm.add_vertex(Epick::Point_3(3, 0, 0)),
+             v2 = tm.add_vertex(Epick::Point_3(3, 1, 0)), v3 = tm.add_vertex(Epick::Point_3(0, 1, 0));
+  tm.add_face(v0, v1, v2);
+  tm.add_face(v0, v2, v3);
+  Chart_map chart;
+  std::vector<std::array<double, 2>> uv(6);
+  for(auto f : faces(tm)) {
+    chart[f] = 0;
+    int c = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      uv[3 * std::size_t(f) + c++] = {{tm.point(target(h, tm)).x(), tm.point(target(h, tm)).y()}};
+  }
+  QD::IO::Pattern_options options;
+  options.scale = 100;
+  options.assembly_page = false;
+  std::stringstream ss;
+  const QD::IO::Pattern_result pr = QD::IO::write_patterns_SVG(
+      ss, tm, boost::make_assoc_property_map(chart), uv, std::vector<Surface_mesh::Edge_index>(), options);
+  BOOST_REQUIRE(pr);
+  BOOST_TEST(pr.part_pages == 2u);
+  boost::property_tree::ptree tree;
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+  std::vector<std::array<double, 4>> lines, windows;
+  for(const auto& child : tree.get_child("svg")) {
+    if(child.first == "defs")
+      for(const auto& def : child.second)
+        if(def.first == "g")
+          for(const auto& e : def.second)
+            if(e.first == "line" && e.second.get<std::string>("<xmlattr>.class", "") == "cut")
+              lines.push_back({{e.second.get<double>("<xmlattr>.x1"), e.second.get<double>("<xmlattr>.y1"),
+                                e.second.get<double>("<xmlattr>.x2"), e.second.get<double>("<xmlattr>.y2")}});
+    if(child.first == "g" && child.second.get<std::string>("<xmlattr>.class") == "part") {
+      std::array<double, 4> w;
+      std::istringstream(child.second.get<std::string>("<xmlattr>.data-window")) >> w[0] >> w[1] >> w[2] >> w[3];
+      windows.push_back(w);
+    }
+  }
+  BOOST_REQUIRE(windows.size() == 2u);
+  double outline = 0;
+  for(const auto& l : lines) outline += std::hypot(l[2] - l[0], l[3] - l[1]);
+  BOOST_TEST(outline == 800., tt::tolerance(1e-6));
+  for(const auto& w : windows) {
+    double held = 0;
+    for(const auto& l : lines) {
+      // the part of an axis-parallel line within the window
+      const double x0 = std::max(std::min(l[0], l[2]), w[0]), x1 = std::min(std::max(l[0], l[2]), w[0] + w[2]);
+      const double y0 = std::max(std::min(l[1], l[3]), w[1]), y1 = std::min(std::max(l[1], l[3]), w[1] + w[3]);
+      if(x1 >= x0 && y1 >= y0) held += std::hypot(x1 - x0, y1 - y0);
+    }
+    BOOST_TEST_MESSAGE("a part holds " << held << " mm of the outline");
+    BOOST_TEST(held >= 0.45 * outline);
+  }
+}
+
 // the order in which to join the pieces: outward from the largest, every piece
 // once, every seam sewn once, listed on a last page of its own
 BOOST_AUTO_TEST_CASE(patterns_list_the_assembly_order)

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,11 +37,14 @@ struct Pattern_part
   std::array<double, 4> on_page() const { return {{low[0] + shift[0], low[1] + shift[1], size[0], size[1]}}; }
 };
 
-// whether the segment a-b meets the box [low, low + size] (Liang and Barsky's clipping)
+// whether the segment a-b meets the box [low, low + size] (Liang and Barsky's
+// clipping); `inside`, if given, receives the share of the segment in the box
 inline bool segment_meets_box(const std::array<double, 2>& a, const std::array<double, 2>& b,
-                              const std::array<double, 2>& low, const std::array<double, 2>& size)
+                              const std::array<double, 2>& low, const std::array<double, 2>& size,
+                              double* inside = nullptr)
 {
   double t0 = 0, t1 = 1;
+  if(inside) *inside = 0;
   for(int c = 0; c < 2; ++c) {
     const double d = b[c] - a[c];
     const double p[2] = {-d, d}, q[2] = {a[c] - low[c], low[c] + size[c] - a[c]};
@@ -57,12 +61,14 @@ inline bool segment_meets_box(const std::array<double, 2>& a, const std::array<d
       if(t0 > t1) return false;
     }
   }
+  if(inside) *inside = t1 - t0;
   return true;
 }
 
 // Cuts every piece of `d` whose placement in `place` (by chart) has more
 // than one part into its parts (`Piece::parts`; the grid of windows shifted
-// within the room the box leaves it, to need the fewest), each part that holds a line,
+// within the room the box leaves it, to need the fewest and to print no
+// sliver where it can), each part that holds a line,
 // a tab or an outline of the piece on a page of its own from page
 // `first_page` on, row by row; draws the marks across the lines between two
 // parts printed (`Piece::marks`, `Piece::mark_labels`) and, on every page of a
@@ -80,9 +86,11 @@ std::size_t cut_into_parts(Drawing& d, const std::vector<Piece_placement>& place
     const Piece_placement& p = place[piece.chart];
     if(p.rows * p.columns <= 1) continue;
     // the windows: a grid of rows x columns over the piece's box, which it
-    // exceeds by some slack; the grid placed, among a few shifts within that
-    // slack, where the fewest windows hold some of the piece (the top left
-    // first on a tie)
+    // exceeds by some slack; the grid placed, among 81 shifts within that
+    // slack (eighths of it across and down), where the fewest windows hold
+    // some of the piece, and among those where the window that holds least of
+    // it holds most (the length of its lines there): a part that holds a
+    // sliver of the piece still takes a page (the top left first on a tie)
     const P2 box{{p.at[0], double(piece.page) * ph + p.at[1]}};
     const P2 slack{{(std::max)(0., double(p.columns) * usable[0] - p.size[0]),
                     (std::max)(0., double(p.rows) * usable[1] - p.size[1])}};
@@ -91,9 +99,12 @@ std::size_t cut_into_parts(Drawing& d, const std::vector<Piece_placement>& place
       return P2{{origin[0] + double(c) * usable[0], origin[1] + double(r) * usable[1]}};
     };
     // the windows that a line, a tab or an outline of the piece meets, each
-    // segment tried against the windows its box reaches (and those next to them)
+    // segment tried against the windows its box reaches (and those next to
+    // them), and the length of those lines in each window
+    std::vector<double> drawn;
     auto windows_met = [&]() {
       std::vector<char> met(p.rows * p.columns, 0);
+      drawn.assign(p.rows * p.columns, 0.);
       auto index = [&](double x, int c, std::size_t n) {
         const double i = std::floor((x - origin[c]) / usable[c]);
         return i < 0 ? std::size_t(0) : (std::min)(n - 1, static_cast<std::size_t>(i));
@@ -102,8 +113,13 @@ std::size_t cut_into_parts(Drawing& d, const std::vector<Piece_placement>& place
         const std::size_t c0 = index((std::min)(a[0], b[0]), 0, p.columns), c1 = index((std::max)(a[0], b[0]), 0, p.columns);
         const std::size_t r0 = index((std::min)(a[1], b[1]), 1, p.rows), r1 = index((std::max)(a[1], b[1]), 1, p.rows);
         for(std::size_t r = r0 > 0 ? r0 - 1 : 0; r <= (std::min)(r1 + 1, p.rows - 1); ++r)
-          for(std::size_t c = c0 > 0 ? c0 - 1 : 0; c <= (std::min)(c1 + 1, p.columns - 1); ++c)
-            if(!met[r * p.columns + c] && segment_meets_box(a, b, window_low(r, c), usable)) met[r * p.columns + c] = 1;
+          for(std::size_t c = c0 > 0 ? c0 - 1 : 0; c <= (std::min)(c1 + 1, p.columns - 1); ++c) {
+            double inside = 0;
+            if(segment_meets_box(a, b, window_low(r, c), usable, &inside)) {
+              met[r * p.columns + c] = 1;
+              drawn[r * p.columns + c] += inside * std::hypot(b[0] - a[0], b[1] - a[1]);
+            }
+          }
       };
       for(const auto& l : piece.lines) add(l.a, l.b);
       for(const auto& t : piece.tabs)
@@ -116,12 +132,18 @@ std::size_t cut_into_parts(Drawing& d, const std::vector<Piece_placement>& place
     {
       P2 best = box;
       std::size_t fewest = p.rows * p.columns + 1;
-      for(double fy : {0., 0.25, 0.5, 0.75, 1.})
-        for(double fx : {0., 0.25, 0.5, 0.75, 1.}) {
+      double best_least = 0;
+      for(double fy : {0., 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.})
+        for(double fx : {0., 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.}) {
           origin = {{box[0] - fx * slack[0], box[1] - fy * slack[1]}};
           const std::vector<char> m = windows_met();
           const std::size_t count = static_cast<std::size_t>(std::count(m.begin(), m.end(), 1));
-          if(count < fewest) fewest = count, best = origin, met = m;
+          // the least drawn on a page of a part printed
+          double least = std::numeric_limits<double>::infinity();
+          for(std::size_t w = 0; w < m.size(); ++w)
+            if(m[w]) least = (std::min)(least, drawn[w]);
+          if(count < fewest || (count == fewest && least > best_least))
+            fewest = count, best_least = least, best = origin, met = m;
         }
       origin = best;
     }
