@@ -102,39 +102,54 @@ inline std::vector<char> edges_on_fold_lines(const std::vector<Fold_edge>& edges
     }
     lo = hi;
   }
-  // the lines: their lengths and ends
+  // the lines: their lengths and ends, on the vertices of the edges numbered
+  // from 0 (`vertices` sorted)
+  std::vector<std::size_t> vertices;
+  vertices.reserve(2 * m);
+  for(const Fold_edge& e : edges) vertices.insert(vertices.end(), e.vertex.begin(), e.vertex.end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  auto number = [&](std::size_t v) {
+    return static_cast<std::size_t>(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
+  };
   std::vector<double> length(m, 0.);
-  std::vector<std::vector<std::size_t>> line_ends(m), members(m);  // vertices, edges
+  std::vector<std::vector<std::size_t>> line_ends(m), members(m);  // numbered vertices, edges
   for(std::size_t i = 0; i < m; ++i) {
     const std::size_t r = root(i);
     members[r].push_back(i);
     length[r] += std::hypot(edges[i].b[0] - edges[i].a[0], edges[i].b[1] - edges[i].a[1]);
     for(std::size_t s = 0; s < 2; ++s)
-      if(!joined[2 * i + s]) line_ends[r].push_back(edges[i].vertex[s]);
+      if(!joined[2 * i + s]) line_ends[r].push_back(number(edges[i].vertex[s]));
   }
+  std::vector<std::vector<std::size_t>> lines_ending_at(vertices.size());  // open lines
+  for(std::size_t r = 0; r < m; ++r)
+    if(line_ends[r].size() == 2)
+      for(std::size_t v : line_ends[r]) lines_ending_at[v].push_back(r);
   // drawn: the lines long enough, then, until none is added, the open lines
   // whose two ends are each on the border or on a line drawn
-  std::vector<char> drawn(m, 0);
-  std::vector<std::size_t> anchors = border;  // sorted
-  std::vector<std::size_t> added;
+  std::vector<char> drawn(m, 0), anchored(vertices.size(), 0);
+  for(std::size_t v = 0; v < vertices.size(); ++v)
+    anchored[v] = std::binary_search(border.begin(), border.end(), vertices[v]);
+  std::vector<std::size_t> newly_anchored;
   auto draw = [&](std::size_t r) {
     drawn[r] = 1;
-    for(std::size_t i : members[r]) added.insert(added.end(), edges[i].vertex.begin(), edges[i].vertex.end());
+    for(std::size_t i : members[r])
+      for(std::size_t v : edges[i].vertex) {
+        const std::size_t k = number(v);
+        if(!anchored[k]) anchored[k] = 1, newly_anchored.push_back(k);
+      }
+  };
+  auto draw_if_anchored = [&](std::size_t r) {
+    if(!drawn[r] && line_ends[r].size() == 2 && anchored[line_ends[r][0]] && anchored[line_ends[r][1]]) draw(r);
   };
   for(std::size_t r = 0; r < m; ++r)
     if(root(r) == r && length[r] >= min_length) draw(r);
-  for(bool more = true; more;) {
-    anchors.insert(anchors.end(), added.begin(), added.end());
-    std::sort(anchors.begin(), anchors.end());
-    added.clear();
-    more = false;
-    for(std::size_t r = 0; r < m; ++r)
-      if(root(r) == r && !drawn[r] && line_ends[r].size() == 2 &&
-         std::binary_search(anchors.begin(), anchors.end(), line_ends[r][0]) &&
-         std::binary_search(anchors.begin(), anchors.end(), line_ends[r][1])) {
-        draw(r);
-        more = true;
-      }
+  for(std::size_t r = 0; r < m; ++r)
+    if(root(r) == r) draw_if_anchored(r);
+  while(!newly_anchored.empty()) {
+    const std::size_t v = newly_anchored.back();
+    newly_anchored.pop_back();
+    for(std::size_t r : lines_ending_at[v]) draw_if_anchored(r);
   }
   std::vector<char> on_line(m);
   for(std::size_t i = 0; i < m; ++i) on_line[i] = drawn[root(i)];
