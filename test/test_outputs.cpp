@@ -904,6 +904,9 @@ struct Strip
         ss, tm, boost::make_assoc_property_map(const_cast<Chart_map&>(chart)), uv,
         std::vector<Surface_mesh::Edge_index>(), options);
     BOOST_REQUIRE(pr);
+    // the strip is 1 long: the model `scale` long on the page
+    BOOST_TEST(pr.min_fold_length == (min_fold_length > 0 ? min_fold_length : min_fold_share * scale),
+               tt::tolerance(1e-12));
     // as many dashed lines in the SVG
     std::size_t drawn = 0;
     for(const std::string kind : {"class=\"mountain\"", "class=\"valley\""})

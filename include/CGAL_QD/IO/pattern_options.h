@@ -170,6 +170,9 @@ struct Pattern_result
   std::size_t cut_edges = 0;    ///< edges on the charts' borders, each drawn once per side
   std::size_t seam_labels = 0;  ///< labels of seam curves, each drawn on both sides
   std::size_t fold_lines = 0;   ///< edges drawn as fold lines (see `Pattern_options::min_fold_length`)
+  /// the shortest fold line drawn, in drawing units: `Pattern_options::min_fold_length`, or the share of
+  /// the model's size it was 0 for (0: every edge beyond the fold angle was drawn)
+  double min_fold_length = 0;
   std::size_t tabs = 0;
   std::size_t notches = 0;  ///< on both sides of every seam, counted once per side
   /// the order in which to join the pieces, built outward from the largest (by 3D area): each step

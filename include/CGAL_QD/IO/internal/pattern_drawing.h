@@ -236,7 +236,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     }
   }
   result.model_size = result.scale * extent;
-  const double min_fold_length =
+  const double min_fold_length = result.min_fold_length =
       options.min_fold_length > 0 ? options.min_fold_length : options.min_fold_share * result.model_size;
   const internal::Page_layout layout =
       internal::lay_out_pieces(boxes, used, result.scale, options.page_width, options.page_height,
