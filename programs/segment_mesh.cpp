@@ -188,26 +188,21 @@ int main(int argc, char** argv)
     return fail("--notches: '" + o.notches + "' is not a positive length such as 50mm or 2in");
   if(!o.seam_allowance.empty() && !((pattern.seam_allowance = length(o.seam_allowance)) > 0))
     return fail("--seam-allowance: '" + o.seam_allowance + "' is not a positive length such as 6mm or 0.25in");
-  // zero, with or without a unit (0, 0mm), is a length here: every bending edge is drawn
-  auto is_zero_length = [&](const std::string& text) {
+  // the shortest fold line: a length, a share of the model's size on the page
+  // (0% to 100%), or zero with or without a unit (every bending edge drawn)
+  {
     char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    return end != text.c_str() && value == 0 && length("1" + std::string(end)) > 0;
-  };
-  // a share of the model's size on the page: a number from 0 to 100 followed by %
-  auto share = [](const std::string& text) {
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    return end != text.c_str() && std::string(end) == "%" && value >= 0 && value <= 100 ? value / 100 : -1.;
-  };
-  if(is_zero_length(o.min_fold_length)) {
-    pattern.min_fold_length = pattern.min_fold_share = 0;
-  } else if(share(o.min_fold_length) >= 0) {
+    const double value = std::strtod(o.min_fold_length.c_str(), &end);
+    const bool number = end != o.min_fold_length.c_str();
+    const std::string unit(number ? end : "");
     pattern.min_fold_length = 0;
-    pattern.min_fold_share = share(o.min_fold_length);
-  } else if(!((pattern.min_fold_length = length(o.min_fold_length)) > 0)) {
-    return fail("--min-fold-length: '" + o.min_fold_length +
-                "' is not a length such as 10mm or 0.5in, a share of the model's size such as 5%, or 0");
+    if(number && unit == "%" && value >= 0 && value <= 100)
+      pattern.min_fold_share = value / 100;
+    else if(number && value == 0 && length("1" + unit) > 0)
+      pattern.min_fold_share = 0;
+    else if(!((pattern.min_fold_length = length(o.min_fold_length)) > 0))
+      return fail("--min-fold-length: '" + o.min_fold_length +
+                  "' is not a length such as 10mm or 0.5in, a share of the model's size such as 5%, or 0");
   }
 #ifndef CGAL_QD_HAS_CLIPPER
   if(pattern.seam_allowance > 0)

@@ -77,9 +77,13 @@ inline std::vector<char> edges_on_fold_lines(const std::vector<Fold_edge>& edges
   };
   std::vector<Joint> joints;
   std::vector<char> joined(2 * m, 0);
+  // the vertices of the edges numbered from 0, and the number of each end's
+  std::vector<std::size_t> vertices, number_of_end(2 * m);
   for(std::size_t lo = 0; lo < ends.size();) {
     std::size_t hi = lo + 1;
     while(hi < ends.size() && ends[hi].first == ends[lo].first) ++hi;
+    for(std::size_t p = lo; p < hi; ++p) number_of_end[ends[p].second] = vertices.size();
+    vertices.push_back(ends[lo].first);
     joints.clear();
     for(std::size_t p = lo; p < hi; ++p)
       for(std::size_t q = p + 1; q < hi; ++q) {
@@ -102,16 +106,7 @@ inline std::vector<char> edges_on_fold_lines(const std::vector<Fold_edge>& edges
     }
     lo = hi;
   }
-  // the lines: their lengths and ends, on the vertices of the edges numbered
-  // from 0 (`vertices` sorted)
-  std::vector<std::size_t> vertices;
-  vertices.reserve(2 * m);
-  for(const Fold_edge& e : edges) vertices.insert(vertices.end(), e.vertex.begin(), e.vertex.end());
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  auto number = [&](std::size_t v) {
-    return static_cast<std::size_t>(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
-  };
+  // the lines: their lengths and ends
   std::vector<double> length(m, 0.);
   std::vector<std::vector<std::size_t>> line_ends(m), members(m);  // numbered vertices, edges
   for(std::size_t i = 0; i < m; ++i) {
@@ -119,7 +114,7 @@ inline std::vector<char> edges_on_fold_lines(const std::vector<Fold_edge>& edges
     members[r].push_back(i);
     length[r] += std::hypot(edges[i].b[0] - edges[i].a[0], edges[i].b[1] - edges[i].a[1]);
     for(std::size_t s = 0; s < 2; ++s)
-      if(!joined[2 * i + s]) line_ends[r].push_back(number(edges[i].vertex[s]));
+      if(!joined[2 * i + s]) line_ends[r].push_back(number_of_end[2 * i + s]);
   }
   std::vector<std::vector<std::size_t>> lines_ending_at(vertices.size());  // open lines
   for(std::size_t r = 0; r < m; ++r)
@@ -134,8 +129,8 @@ inline std::vector<char> edges_on_fold_lines(const std::vector<Fold_edge>& edges
   auto draw = [&](std::size_t r) {
     drawn[r] = 1;
     for(std::size_t i : members[r])
-      for(std::size_t v : edges[i].vertex) {
-        const std::size_t k = number(v);
+      for(std::size_t end : {2 * i, 2 * i + 1}) {
+        const std::size_t k = number_of_end[end];
         if(!anchored[k]) anchored[k] = 1, newly_anchored.push_back(k);
       }
   };

@@ -419,12 +419,13 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         // the edge of next(h) runs from corner c to corner c + 1
         const halfedge_descriptor g = next(h, tm);
         const P2 a = point_at(3 * i + c), b = point_at(3 * i + (c + 1) % 3);
+        const std::size_t from = static_cast<std::size_t>(get(vim, source(g, tm))),
+                          to = static_cast<std::size_t>(get(vim, target(g, tm)));
         if(is_cut(g)) {
-          piece.lines.push_back({Pattern_drawing::CUT, a, b,
-                                 {{vertex_number[get(vim, source(g, tm))], vertex_number[get(vim, target(g, tm))]}}});
+          piece.lines.push_back({Pattern_drawing::CUT, a, b, {{vertex_number[from], vertex_number[to]}}});
           ++result.cut_edges;
-          border.push_back(static_cast<std::size_t>(get(vim, source(g, tm))));
-          border.push_back(static_cast<std::size_t>(get(vim, target(g, tm))));
+          border.push_back(from);
+          border.push_back(to);
           continue;
         }
         // an interior edge: draw it once, from the face with the smaller index
@@ -436,9 +437,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         const double above = (fb.centroid[0] - fa.centroid[0]) * fa.normal[0] +
                              (fb.centroid[1] - fa.centroid[1]) * fa.normal[1] +
                              (fb.centroid[2] - fa.centroid[2]) * fa.normal[2];
-        folds.push_back({{{static_cast<std::size_t>(get(vim, source(g, tm))),
-                           static_cast<std::size_t>(get(vim, target(g, tm)))}},
-                         a, b, above > 0 ? Pattern_drawing::VALLEY : Pattern_drawing::MOUNTAIN});
+        folds.push_back({{{from, to}}, a, b, above > 0 ? Pattern_drawing::VALLEY : Pattern_drawing::MOUNTAIN});
       }
     }
     std::sort(border.begin(), border.end());
