@@ -259,6 +259,8 @@ BOOST_AUTO_TEST_CASE(size_adaptive_solver_switches_and_falls_back)
 // Simplicial_LDLT_solver solves all the columns of a right-hand side in one
 // pass over the factor: the same numbers, to the last bit, as Eigen's solve()
 // column by column, with the AMD and the natural ordering, for 1 to 3 columns
+// (rows of zeros, and rows with a zero in one column only, which Eigen skips
+// in that column alone)
 BOOST_AUTO_TEST_CASE(simplicial_ldlt_solves_columns_as_eigen_does)
 {
   // a symmetric positive definite matrix on a 20 x 20 grid (lower triangle),
@@ -285,7 +287,8 @@ BOOST_AUTO_TEST_CASE(simplicial_ldlt_solves_columns_as_eigen_does)
   for(int cols = 1; cols <= 3; ++cols) {
     Eigen::MatrixXd B(n, cols);
     for(int r = 0; r < n; ++r)
-      for(int c = 0; c < cols; ++c) B(r, c) = r % 11 == 0 ? 0. : std::sin(0.37 * r + c);
+      for(int c = 0; c < cols; ++c)
+        B(r, c) = r % 11 == 0 || (r % 13 == 0 && c == 1) ? 0. : std::sin(0.37 * r + c);
     QD::Simplicial_LDLT_solver ours;
     BOOST_REQUIRE(ours.factorize(A));
     Eigen::MatrixXd X;
@@ -327,7 +330,7 @@ BOOST_AUTO_TEST_CASE(arap_global_step_in_the_factor_order_gives_the_same_map)
   A.setFromTriplets(t.begin(), t.end());
   Eigen::MatrixXd B(n, 2);
   for(int r = 0; r < n; ++r)
-    for(int c = 0; c < 2; ++c) B(r, c) = r % 7 == 0 ? 0. : std::cos(0.29 * r + 2 * c);
+    for(int c = 0; c < 2; ++c) B(r, c) = r % 7 == 0 || (r % 5 == 0 && c == 0) ? 0. : std::cos(0.29 * r + 2 * c);
   QD::Simplicial_LDLT_solver solver;
   BOOST_REQUIRE(solver.factorize(A));
   const int* order = solver.order_of_rows();
