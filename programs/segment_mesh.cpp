@@ -42,9 +42,11 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <system_error>
 #include <string>
 #include <utility>
 #include <vector>
@@ -316,27 +318,47 @@ int main(int argc, char** argv)
     if(!problem.empty()) return fail("cannot write into '" + o.out_dir + "': " + problem);
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(out_mesh, out_chart, r.corner_uv);
     if(!atlas) return fail(std::string("cannot pack the charts into an atlas: ") + CGAL_QD::error_message(atlas.status));
-    CGAL_QD::IO::Pattern_result pages;
-    bool ok = CGAL_QD::IO::write_PLY_with_charts(files.file("charts.ply"), out_mesh, out_chart) &&
-              CGAL_QD::IO::write_OBJ_with_uv(files.file("atlas.obj"), out_mesh, atlas.corner_uv, "atlas.mtl",
-                                             "atlas");
-    if(ok)
-      ok = bool(files.file("atlas.mtl") << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\n"
-                                           "Ks 0 0 0\n");
-    if(ok)
-      ok = bool(pages = CGAL_QD::IO::write_patterns_SVG(files.file("patterns.svg"), out_mesh, out_chart,
-                                                         r.corner_uv, r.seam_edges, pattern));
+    // every file opened now (moved into place together at the end, or
+    // removed), so that the meshes and the picture, which need nothing of the
+    // patterns, are written beside them on a second thread (the same bytes)
+    std::ofstream &ply = files.file("charts.ply"), &obj = files.file("atlas.obj"), &mtl = files.file("atlas.mtl"),
+                  &patterns_svg = files.file("patterns.svg");
+#ifdef CGAL_QD_HAS_CAIRO
+    std::ofstream& patterns_pdf = files.file("patterns.pdf");
+#endif
+    std::ofstream& segmentation_svg = files.file("segmentation.svg");
+#ifdef CGAL_QD_HAS_THREE_JS
+    std::ofstream& viewer_html = files.file("viewer.html");
+#endif
+    std::ofstream& report_json = files.file("report.json");
+    auto meshes_and_picture = [&] {
+      return CGAL_QD::IO::write_PLY_with_charts(ply, out_mesh, out_chart) &&
+             CGAL_QD::IO::write_OBJ_with_uv(obj, out_mesh, atlas.corner_uv, "atlas.mtl", "atlas") &&
+             bool(mtl << "# the material of atlas.obj\nnewmtl atlas\nKd 0.8 0.8 0.8\nKa 0 0 0\nKs 0 0 0\n") &&
+             CGAL_QD::IO::write_segmentation_SVG(segmentation_svg, out_mesh, out_chart, r.seam_edges) ==
+                 CGAL_QD::Error_code::OK;
+    };
+    std::future<bool> beside;
+    bool side_ok = true;
+    if(o.sequential) {
+      side_ok = meshes_and_picture();
+    } else {
+      try {
+        beside = std::async(std::launch::async, meshes_and_picture);
+      } catch(const std::system_error&) {  // no second thread: one after the other
+        side_ok = meshes_and_picture();
+      }
+    }
+    CGAL_QD::IO::Pattern_result pages =
+        CGAL_QD::IO::write_patterns_SVG(patterns_svg, out_mesh, out_chart, r.corner_uv, r.seam_edges, pattern);
+    bool ok = side_ok && bool(pages);
 #ifdef CGAL_QD_HAS_CAIRO
     const bool pdf = true;
     if(ok)
-      ok = bool(CGAL_QD::IO::write_patterns_PDF(files.file("patterns.pdf"), out_mesh, out_chart, r.corner_uv,
-                                                r.seam_edges, pattern));
+      ok = bool(CGAL_QD::IO::write_patterns_PDF(patterns_pdf, out_mesh, out_chart, r.corner_uv, r.seam_edges, pattern));
 #else
     const bool pdf = false;
 #endif
-    if(ok)
-      ok = CGAL_QD::IO::write_segmentation_SVG(files.file("segmentation.svg"), out_mesh, out_chart, r.seam_edges) ==
-           CGAL_QD::Error_code::OK;
 #ifdef CGAL_QD_HAS_THREE_JS
     const bool viewer = true;
     if(ok) {
@@ -347,14 +369,14 @@ int main(int argc, char** argv)
                    (r.number_of_charts == 1 ? " piece" : " pieces");
       view.pattern_scale = pages.scale;
       view.pattern_units = pattern.units;
-      ok = CGAL_QD::IO::write_viewer_HTML(files.file("viewer.html"), out_mesh, out_chart, r, view) ==
-           CGAL_QD::Error_code::OK;
+      ok = CGAL_QD::IO::write_viewer_HTML(viewer_html, out_mesh, out_chart, r, view) == CGAL_QD::Error_code::OK;
     }
 #else
     const bool viewer = false;
 #endif
+    if(beside.valid()) ok = beside.get() && ok;
     if(ok)
-      ok = bool(files.file("report.json")
+      ok = bool(report_json
                 << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units, pdf, pattern.seam_allowance, viewer})
                        .dump(2)
                 << "\n");
