@@ -193,6 +193,10 @@ public:
 
   std::size_t number_of_proxies() const { return m_proxies.size(); }
 
+  // whether a flood met two entries of the same error, and floods with every
+  // copy since (see `partition()`)
+  bool floods_with_copies() const { return m_ties; }
+
   // the proxy of every face
   std::vector<std::size_t> proxy_of() const
   {
@@ -270,17 +274,64 @@ private:
     return p;
   }
 
-  // every face to the proxy that reaches it first, flooding from the seeds
-  // in the order of the error of the face to the proxy it would join
+  // Every face to the proxy that reaches it first, flooding from the seeds
+  // in the order of the error of the face to the proxy it would join.
+  //
+  // A face is queued once per neighbour that joins a proxy, so mostly two or
+  // three times with the same proxy; the copies are taken from the queue
+  // after the first, and skipped. Without them the flood takes the same
+  // decisions whenever no two entries of the queue have the same error: the
+  // queue then gives its entries in the order of their errors, whatever it
+  // holds besides. Where two have the same error, the binary heap's own
+  // arrangement, which the copies change, decides which comes first (CGAL's
+  // class, whose decisions step 1 takes, keeps every copy). So each flood
+  // first runs without the copies, and as soon as the entry next to be taken
+  // has the error of the one just taken, it starts again with every copy and
+  // keeps them for the floods that follow (meshes with planar parts have such
+  // ties; scanned surfaces, as a rule, none).
   void partition()
+  {
+    if(!m_ties && partition_without_copies()) return;
+    m_ties = true;
+    partition_with_copies();
+  }
+
+  // the flood with every copy, as CGAL's class floods
+  void partition_with_copies()
+  {
+    flood([&](std::size_t g, std::size_t p) {
+      m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
+      std::push_heap(m_queue.begin(), m_queue.end());
+    }, [](const Face_to_integrate&) { return true; });
+  }
+
+  // the flood without the copies; false where two entries had the same error
+  bool partition_without_copies()
+  {
+    const std::array<std::uint32_t, 3> nothing = {no_face, no_face, no_face};
+    m_queued.assign(m_proxy_of.size(), nothing);
+    return flood([&](std::size_t g, std::size_t p) {
+      // the proxies it is queued with (at most one per neighbour)
+      std::array<std::uint32_t, 3>& q = m_queued[g];
+      int k = 0;
+      while(k < 3 && q[k] != no_face) {
+        if(q[k] == p) return;
+        ++k;
+      }
+      if(k < 3) q[k] = std::uint32_t(p);
+      m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
+      std::push_heap(m_queue.begin(), m_queue.end());
+    }, [&](const Face_to_integrate& taken) { return m_queue.empty() || m_queue.front().error != taken.error; });
+  }
+
+  // the flood with `push(face, proxy)`; it stops, returning false, where
+  // `go_on(entry just taken)` is false
+  template <class Push, class GoOn>
+  bool flood(const Push& push, const GoOn& go_on)
   {
     std::fill(m_proxy_of.begin(), m_proxy_of.end(), no_face);
     // a binary heap, as std::priority_queue keeps it, whose storage is kept
     m_queue.clear();
-    auto push = [&](std::size_t g, std::size_t p) {
-      m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
-      std::push_heap(m_queue.begin(), m_queue.end());
-    };
     for(std::size_t p = 0; p < m_proxies.size(); ++p) {
       const std::size_t f = m_proxies[p].seed;
       m_proxy_of[f] = static_cast<std::uint32_t>(p);
@@ -301,6 +352,7 @@ private:
           if(g != no_face) prefetch(&m_geo[g]);
       std::pop_heap(m_queue.begin(), m_queue.end());
       m_queue.pop_back();
+      if(!go_on(c)) return false;
       if(!m_queue.empty()) {
         prefetch(&m_next_to[m_queue.front().face]);
         prefetch(&m_proxy_of[m_queue.front().face]);
@@ -310,6 +362,7 @@ private:
       for(std::uint32_t g : next)
         if(g != no_face && m_proxy_of[g] == no_face) push(g, c.proxy);
     }
+    return true;
   }
 
   // every proxy fitted to its faces, taken in the order of `m_order`; the
@@ -378,6 +431,9 @@ private:
   std::vector<std::size_t> m_face;         // the face index of every face, by number
   std::vector<std::uint32_t> m_order;      // the faces in the order of `faces(tm)`, by number
   std::vector<std::uint32_t> m_proxy_of;  // by number; `no_face` for none
+  // by number, in a flood without copies: the proxies a face is queued with
+  std::vector<std::array<std::uint32_t, 3>> m_queued;
+  bool m_ties = false;  // whether a flood met two entries of the same error
   std::vector<Proxy> m_proxies;
   std::vector<Face_to_integrate> m_queue;
   std::vector<std::size_t> m_start, m_fill, m_faces;  // the faces of every proxy, by proxy
