@@ -6,7 +6,7 @@
 
 // Whether a polygon soup already is a consistently oriented manifold mesh,
 // the test of `CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`
-// on sorted arrays instead of node-based sets: every polygon has at least 3
+// on arrays instead of node-based sets: every polygon has at least 3
 // corners and no vertex twice; no oriented edge is used twice (so an edge has
 // at most two polygons, which run along it in opposite directions); and the
 // polygons around every vertex form one fan, closed or open. Such a soup is
@@ -15,7 +15,7 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL_QD {
@@ -48,18 +48,29 @@ bool is_oriented_manifold_soup(const PolygonRange& polygons, std::size_t number_
   const std::size_t nc = vertex.size();
   auto next = [&](std::size_t c) { return c + 1 == first[polygon_of[c] + 1] ? first[polygon_of[c]] : c + 1; };
   auto prev = [&](std::size_t c) { return c == first[polygon_of[c]] ? first[polygon_of[c] + 1] - 1 : c - 1; };
-  // the oriented edges (from the corner's vertex to the next corner's), sorted
-  typedef std::tuple<std::size_t, std::size_t, std::size_t> Edge;  // (from, to, corner)
-  std::vector<Edge> edges(nc);
-  for(std::size_t c = 0; c < nc; ++c) edges[c] = Edge(vertex[c], vertex[next(c)], c);
-  std::sort(edges.begin(), edges.end());
-  for(std::size_t i = 1; i < nc; ++i)
-    if(std::get<0>(edges[i]) == std::get<0>(edges[i - 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i - 1]))
-      return false;  // an oriented edge used twice
+  // the oriented edges (from the corner's vertex to the next corner's),
+  // grouped by the vertex they leave (a counting sort) and, within a group of
+  // a few, sorted by the vertex they reach
+  std::vector<std::size_t> start(number_of_points + 1, 0);
+  for(std::size_t c = 0; c < nc; ++c) ++start[vertex[c] + 1];
+  for(std::size_t v = 0; v < number_of_points; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::size_t, std::size_t>> out(nc);  // (to, corner)
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t c = 0; c < nc; ++c) out[fill[vertex[c]]++] = {vertex[next(c)], c};
+  }
+  for(std::size_t v = 0; v < number_of_points; ++v) {
+    const auto b = out.begin() + static_cast<std::ptrdiff_t>(start[v]),
+               e = out.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    std::sort(b, e);
+    for(auto it = b; it != e && it + 1 != e; ++it)
+      if(it->first == (it + 1)->first) return false;  // an oriented edge used twice
+  }
   // the corner whose edge runs from u to v, or none
   auto leaving = [&](std::size_t u, std::size_t v) {
-    const auto it = std::lower_bound(edges.begin(), edges.end(), Edge(u, v, 0));
-    return it != edges.end() && std::get<0>(*it) == u && std::get<1>(*it) == v ? std::get<2>(*it) : none;
+    for(std::size_t k = start[u]; k < start[u + 1]; ++k)
+      if(out[k].first == v) return out[k].second;
+    return none;
   };
   // every vertex: one walk around it from its first corner reaches all of its corners
   std::vector<char> visited(nc, 0), walked(number_of_points, 0);
