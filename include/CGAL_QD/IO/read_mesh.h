@@ -50,15 +50,31 @@ struct Read_status
 
 namespace internal {
 
+// the words of `line` (separated by the blanks of the "C" locale, up to a
+// word that starts a comment with '#') into `words`, whose strings are reused
+inline void split_words(const std::string& line, std::vector<std::string>& words)
+{
+  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; };
+  std::size_t n = 0;
+  const char *s = line.data(), *end = s + line.size();
+  for(;;) {
+    while(s != end && blank(*s)) ++s;
+    if(s == end || *s == '#') break;
+    const char* b = s;
+    while(s != end && !blank(*s)) ++s;
+    if(n < words.size())
+      words[n].assign(b, s);
+    else
+      words.emplace_back(b, s);
+    ++n;
+  }
+  words.resize(n);
+}
+
 inline std::vector<std::string> split_words(const std::string& line)
 {
   std::vector<std::string> words;
-  std::istringstream in(line);
-  std::string w;
-  while(in >> w) {
-    if(w[0] == '#') break;
-    words.push_back(w);
-  }
+  split_words(line, words);
   return words;
 }
 
@@ -94,7 +110,7 @@ IO::Read_status read_ascii_OFF(std::istream& in, std::vector<Point>& points, std
   auto next_words = [&](std::vector<std::string>& words) {
     while(std::getline(in, line)) {
       ++line_number;
-      words = split_words(line);
+      split_words(line, words);
       if(!words.empty()) return true;
     }
     return false;
