@@ -17,11 +17,7 @@
 #endif
 
 #include <CGAL_QD/internal/digest.h>
-
-#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#include <emmintrin.h>
-#define CGAL_QD_SOLVE_SSE2
-#endif
+#include <CGAL_QD/internal/sse2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -208,7 +204,7 @@ void solve_ldlt_interleaved(const Solver& ldlt, double* Y)
   for(Eigen::Index j = 0; j < n; ++j) {
     const double a = Y[2 * j], b = Y[2 * j + 1];
     if(a == 0 && b == 0) continue;
-#ifdef CGAL_QD_SOLVE_SSE2
+#ifdef CGAL_QD_SSE2
     if(a != 0 && b != 0) {
       // both columns in the two lanes: the same product and difference each
       const __m128d ab = _mm_loadu_pd(Y + 2 * j);
@@ -233,7 +229,7 @@ void solve_ldlt_interleaved(const Solver& ldlt, double* Y)
   }
   // L^T y = y
   for(Eigen::Index j = n - 1; j >= 0; --j) {
-#ifdef CGAL_QD_SOLVE_SSE2
+#ifdef CGAL_QD_SSE2
     __m128d ab = _mm_loadu_pd(Y + 2 * j);
     for(auto p = outer[j], e = outer[j + 1]; p < e; ++p)
       ab = _mm_sub_pd(ab, _mm_mul_pd(_mm_set1_pd(value[p]), _mm_loadu_pd(Y + 2 * inner[p])));

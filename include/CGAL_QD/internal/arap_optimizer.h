@@ -19,10 +19,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#include <emmintrin.h>
-#define CGAL_QD_ARAP_SSE2
-#endif
+#include <CGAL_QD/internal/sse2.h>
 
 #include <algorithm>
 #include <array>
@@ -164,7 +161,7 @@ public:
     }
     double energy = 0;
     std::size_t f = 0;
-#ifdef CGAL_QD_ARAP_SSE2
+#ifdef CGAL_QD_SSE2
     if(m_two_lanes && (m_alpha == 0 || m_alpha == 0.5 || m_alpha == 1.))
       for(; f + 1 < nf; f += 2) energy = two_targets(f, energy);
 #endif
@@ -286,7 +283,7 @@ private:
     return (ea * ea + eb * eb + ec * ec + ed * ed) * m_kappa[f][1];
   }
 
-#ifdef CGAL_QD_ARAP_SSE2
+#ifdef CGAL_QD_SSE2
   // `target_and_energy()` for faces f and f + 1 at once, in SSE2 lanes: the
   // same operations in the same order, so the same bits (the square roots and
   // divisions, most of the cost, run two at a time); the two energy terms

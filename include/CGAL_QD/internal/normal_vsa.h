@@ -296,13 +296,17 @@ private:
     partition_with_copies();
   }
 
+  // face g into the queue for proxy p
+  void queue(std::size_t g, std::size_t p)
+  {
+    m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
+    std::push_heap(m_queue.begin(), m_queue.end());
+  }
+
   // the flood with every copy, as CGAL's class floods
   void partition_with_copies()
   {
-    flood([&](std::size_t g, std::size_t p) {
-      m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
-      std::push_heap(m_queue.begin(), m_queue.end());
-    }, [](const Face_to_integrate&) { return true; });
+    flood([&](std::size_t g, std::size_t p) { queue(g, p); }, [](const Face_to_integrate&) { return true; });
   }
 
   // the flood without the copies; false where two entries had the same error
@@ -319,8 +323,7 @@ private:
         ++k;
       }
       if(k < 3) q[k] = std::uint32_t(p);
-      m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
-      std::push_heap(m_queue.begin(), m_queue.end());
+      queue(g, p);
     }, [&](const Face_to_integrate& taken) { return m_queue.empty() || m_queue.front().error != taken.error; });
   }
 
