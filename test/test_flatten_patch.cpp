@@ -434,6 +434,58 @@ BOOST_AUTO_TEST_CASE(ordering_cache_gives_the_same_factorisation)
   BOOST_TEST(small->misses() == 3u);
 }
 
+// The ordering of Simplicial_LDLT_solver (Cached_AMD_ordering) calls Eigen's
+// AMD routine on the symmetric pattern it is given, without the transpose and
+// sum of Eigen::AMDOrdering: the permutation must be Eigen's, entry for entry,
+// on patterns as SimplicialLDLT gives them (a grid, random couplings, a
+// dense row, empty columns), and on columns not sorted (Eigen's own path)
+BOOST_AUTO_TEST_CASE(amd_ordering_on_the_pattern_is_eigens)
+{
+  typedef Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> Permutation;
+  std::mt19937 rng(11);
+  for(int shape = 0; shape < 4; ++shape) {
+    const int n = shape == 0 ? 400 : 300;
+    std::vector<Eigen::Triplet<double>> t;
+    for(int r = 0; r < n; ++r)
+      if(!(shape == 3 && r % 17 == 0)) t.emplace_back(r, r, 4.);  // shape 3: a few empty columns
+    auto couple = [&](int a, int b) {
+      if(a != b) t.emplace_back((std::max)(a, b), (std::min)(a, b), -1.);
+    };
+    if(shape == 0) {  // a 20 x 20 grid
+      for(int i = 0; i < 20; ++i)
+        for(int j = 0; j < 20; ++j) {
+          if(j + 1 < 20) couple(i * 20 + j, i * 20 + j + 1);
+          if(i + 1 < 20) couple(i * 20 + j, (i + 1) * 20 + j);
+        }
+    } else {
+      for(int e = 0; e < 4 * n; ++e) couple(int(rng() % unsigned(n)), int(rng() % unsigned(n)));
+      if(shape == 2)  // a row dense enough for AMD to set it aside
+        for(int r = 1; r < n; ++r) couple(0, r);
+    }
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    Eigen::SparseMatrix<double> C;
+    C = A.selfadjointView<Eigen::Lower>();  // as SimplicialLDLT orders it
+    Permutation ours, eigen;
+    QD::internal::Cached_AMD_ordering<int>()(C, ours);
+    Eigen::AMDOrdering<int>()(C, eigen);
+    BOOST_REQUIRE_EQUAL(ours.size(), eigen.size());
+    BOOST_TEST((ours.indices().array() == eigen.indices().array()).all(), "shape " << shape);
+    if(shape == 1) {
+      // the entries of every column in reverse order: not sorted
+      Eigen::SparseMatrix<double> R = C;
+      for(Eigen::Index j = 0; j < n; ++j) {
+        std::reverse(R.innerIndexPtr() + R.outerIndexPtr()[j], R.innerIndexPtr() + R.outerIndexPtr()[j + 1]);
+        std::reverse(R.valuePtr() + R.outerIndexPtr()[j], R.valuePtr() + R.outerIndexPtr()[j + 1]);
+      }
+      Permutation reversed, reversed_eigen;
+      QD::internal::Cached_AMD_ordering<int>()(R, reversed);
+      Eigen::AMDOrdering<int>()(R, reversed_eigen);
+      BOOST_TEST((reversed.indices().array() == reversed_eigen.indices().array()).all());
+    }
+  }
+}
+
 // with the default solver, and with one that analyses every system ahead on a
 // second thread (which then runs on the bad mesh too)
 BOOST_AUTO_TEST_CASE_TEMPLATE(bad_input_writes_nothing, Mesh, Mesh_types)

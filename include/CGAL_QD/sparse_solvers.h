@@ -11,6 +11,7 @@
 /// columns, both returning whether they succeeded, and `name()`.
 
 #include <Eigen/Sparse>
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_QD_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -159,8 +160,45 @@ struct Cached_AMD_ordering
     Ordering_cache::Key key;
     const bool keyed = cache && Ordering_cache::key_of(C, key);
     if(keyed && cache->find(key, p)) return;
-    Eigen::AMDOrdering<StorageIndex>()(C, p);
+    amd_ordering_of_symmetric(C, p);
     if(keyed) cache->store(key, p);
+  }
+
+private:
+  // Eigen's AMD ordering of C, a symmetric pattern (both triangles, as
+  // SimplicialLDLT gives it). `Eigen::AMDOrdering` first forms the pattern of
+  // C^T + C, which for such a C whose columns are sorted is C's own, entry for
+  // entry; the AMD routine then gets a copy of C's pattern instead: the same
+  // input, so the same permutation, without the transpose and the sum (about
+  // a sixth of the ordering's time). Columns not sorted go through
+  // `Eigen::AMDOrdering`.
+  template <class MatrixType>
+  static void amd_ordering_of_symmetric(const MatrixType& C, PermutationType& p)
+  {
+    typedef Eigen::SparseMatrix<typename MatrixType::Scalar, Eigen::ColMajor, StorageIndex> Pattern;
+    const Eigen::Index n = C.cols();
+    bool sorted = C.isCompressed() && C.rows() == n;
+    const StorageIndex* outer = C.outerIndexPtr();
+    const StorageIndex* inner = C.innerIndexPtr();
+    for(Eigen::Index j = 0; sorted && j < n; ++j)
+      for(StorageIndex k = outer[j] + 1; k < outer[j + 1]; ++k)
+        if(!(inner[k - 1] < inner[k])) {
+          sorted = false;
+          break;
+        }
+    if(!sorted) {
+      Eigen::AMDOrdering<StorageIndex>()(C, p);
+      return;
+    }
+    const StorageIndex nnz = outer[n];
+    Pattern symm(n, n);
+    // room for the AMD routine's elbow room, as it asks for it, and the pattern
+    symm.data().reserve(static_cast<Eigen::Index>(nnz + nnz / 5 + 2 * n));
+    symm.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    std::copy(outer, outer + n + 1, symm.outerIndexPtr());
+    std::copy(inner, inner + nnz, symm.innerIndexPtr());
+    std::fill(symm.valuePtr(), symm.valuePtr() + nnz, typename MatrixType::Scalar(0));
+    Eigen::internal::minimum_degree_ordering(symm, p);
   }
 };
 
