@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -1331,34 +1332,89 @@ BOOST_AUTO_TEST_CASE(pdf_parts_of_a_large_piece_join_at_true_scale)
 }
 #endif // CGAL_QD_HAS_CAIRO
 
-BOOST_AUTO_TEST_CASE(segmentation_picture_draws_every_face_and_seam)
+namespace {
+
+// the polygons and seam lines of a segmentation picture, and the fills of the polygons
+struct Picture
+{
+  std::size_t polygons = 0, lines = 0, turned_towards = 0, turned_away = 0;
+  std::multiset<std::string> fills;
+};
+
+template <class EdgeRange>
+Picture picture(const Surface_mesh& tm, const Chart_map& chart, const EdgeRange& seams)
+{
+  std::stringstream ss;
+  BOOST_REQUIRE((QD::IO::write_segmentation_SVG(ss, tm, boost::make_assoc_property_map(chart), seams) ==
+                 QD::Error_code::OK));
+  boost::property_tree::ptree tree;
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+  Picture p;
+  for(const auto& child : tree.get_child("svg.g")) {
+    if(child.first == "polygon") {
+      ++p.polygons;
+      p.fills.insert(child.second.get<std::string>("<xmlattr>.fill"));
+      // every point inside the picture
+      std::istringstream pts(child.second.get<std::string>("<xmlattr>.points"));
+      std::string xy;
+      std::vector<std::array<double, 2>> c;
+      while(pts >> xy) {
+        const double x = std::stod(xy.substr(0, xy.find(','))), y = std::stod(xy.substr(xy.find(',') + 1));
+        BOOST_TEST((x >= 0 && x <= 800 && y >= 0 && y <= 800));
+        c.push_back({x, y});
+      }
+      // turned towards the viewer: clockwise on the page, whose y axis points
+      // down (a little slack for the rounding of the coordinates)
+      double area = 0;
+      for(std::size_t k = 0; k < c.size(); ++k)
+        area += c[k][0] * c[(k + 1) % c.size()][1] - c[(k + 1) % c.size()][0] * c[k][1];
+      if(area > 0.1) ++p.turned_away;
+      if(area < -0.1) ++p.turned_towards;
+    }
+    if(child.first == "line") ++p.lines;
+  }
+  return p;
+}
+
+} // namespace
+
+// A closed surface is drawn without the faces turned away from the viewer
+// (the faces turned towards it cover them), whichever way its faces are
+// oriented; a surface with a border is drawn whole
+BOOST_AUTO_TEST_CASE(segmentation_picture_draws_the_faces_that_can_be_seen_and_their_seams)
 {
   for(const Segmented& s : meshes()) {
-    std::stringstream ss;
-    BOOST_REQUIRE((QD::IO::write_segmentation_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart),
-                                                  s.result.seam_edges) == QD::Error_code::OK));
-    boost::property_tree::ptree tree;
-    BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
-    std::size_t polygons = 0, lines = 0;
-    std::set<std::string> fills;
-    for(const auto& child : tree.get_child("svg.g")) {
-      if(child.first == "polygon") {
-        ++polygons;
-        fills.insert(child.second.get<std::string>("<xmlattr>.fill"));
-        // every point inside the picture
-        std::istringstream pts(child.second.get<std::string>("<xmlattr>.points"));
-        std::string xy;
-        while(pts >> xy) {
-          const double x = std::stod(xy.substr(0, xy.find(','))), y = std::stod(xy.substr(xy.find(',') + 1));
-          BOOST_TEST((x >= 0 && x <= 800 && y >= 0 && y <= 800));
-        }
-      }
-      if(child.first == "line") ++lines;
-    }
-    BOOST_TEST(polygons == num_faces(s.tm));
-    BOOST_TEST(lines == 2 * s.result.seam_edges.size());  // a seam edge is drawn with each of its faces
-    BOOST_TEST(fills.size() > s.result.number_of_charts);  // shaded chart colours
+    const Picture p = picture(s.tm, s.chart, s.result.seam_edges);
+    BOOST_TEST_MESSAGE(p.polygons << " of " << num_faces(s.tm) << " faces drawn, " << p.lines << " seam lines");
+    // a closed surface: about half of its faces turned towards the viewer
+    BOOST_TEST(p.polygons < 0.7 * double(num_faces(s.tm)));
+    BOOST_TEST(p.polygons > 0.3 * double(num_faces(s.tm)));
+    BOOST_TEST(p.turned_away == 0u);
+    // a seam edge is drawn with each of its faces that is drawn
+    BOOST_TEST(p.lines < 2 * s.result.seam_edges.size());
+    BOOST_TEST(p.lines > s.result.seam_edges.size() / 2);
+    std::set<std::string> shades(p.fills.begin(), p.fills.end());
+    BOOST_TEST(shades.size() > s.result.number_of_charts);  // shaded chart colours
+    // inside out: the same faces drawn in the same shades
+    Surface_mesh inverted = s.tm;
+    CGAL::Polygon_mesh_processing::reverse_face_orientations(inverted);
+    Chart_map inverted_chart;
+    for(auto f : faces(inverted)) inverted_chart[f] = s.chart.at(f);
+    std::vector<Surface_mesh::Edge_index> inverted_seams(s.result.seam_edges.begin(), s.result.seam_edges.end());
+    const Picture q = picture(inverted, inverted_chart, inverted_seams);
+    BOOST_TEST(q.polygons == p.polygons);
+    BOOST_TEST(q.lines == p.lines);
+    BOOST_TEST((q.fills == p.fills));
+    BOOST_TEST(q.turned_away == p.turned_towards);  // their orientation on the page is reversed too
+    BOOST_TEST(q.turned_towards == 0u);
   }
+  // a tube open at both ends: every face drawn, its inside through the ends
+  const Surface_mesh tube = make<Surface_mesh>(grid(24, 8, cylinder(1.0, 1.9 * 3.14159265358979, 2.0)));
+  Chart_map tube_chart;
+  for(auto f : faces(tube)) tube_chart[f] = static_cast<std::size_t>(f) % 2;
+  const Picture t = picture(tube, tube_chart, std::vector<Surface_mesh::Edge_index>());
+  BOOST_TEST(t.polygons == num_faces(tube));
+  BOOST_TEST(t.turned_away > 0u);
   std::stringstream ss;
   const Surface_mesh empty;
   Chart_map none;

@@ -11,6 +11,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/IO/chart_palette.h>
+#include <CGAL_QD/IO/internal/closed_components.h>
 #include <CGAL_QD/IO/internal/view_choice.h>
 #include <CGAL_QD/internal/validation.h>
 
@@ -52,14 +53,21 @@ struct Picture_options
 /// border differ), by a light from the viewer, back faces darker; the faces are sorted
 /// back to front by the depth of their centroid and drawn in that order
 /// (painter's algorithm), each followed by its seam edges in black, so nearer
-/// faces hide farther seams.
+/// faces hide farther seams. Every face is outlined in its own colour, 0.6
+/// pixel wide, which closes the gaps that anti-aliasing leaves between
+/// neighbouring faces. On a closed connected component (no border edge)
+/// the faces turned away from the viewer are left out: the faces turned
+/// towards it cover them (about half of the faces, and of the file); which
+/// side is outside comes from the sign of the component's volume. A
+/// component with a border is drawn whole, its inside showing through the
+/// border.
 ///
 /// \param out the stream written to
 /// \param tm the triangle mesh
 /// \param face_chart the chart id of every face
 /// \param options the drawing options
 /// \param seam_edges the edges to draw in black (`Segmentation_result::seam_edges`)
-/// \param np optional: `vertex_point_map`, `vertex_index_map`
+/// \param np optional: `vertex_point_map`, `vertex_index_map`, `face_index_map`
 /// \returns `OK`; `EMPTY_MESH` without faces, `INVALID_COORDINATES` for a non-finite point
 ///          or a stream that failed
 template <class TriangleMesh, class FaceChartMap, class EdgeRange,
@@ -120,13 +128,21 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
                                       (s - (hi[1] - lo[1]) / span * s) / 2}};
   };
   std::set<typename GT::edge_descriptor> seam(seam_edges.begin(), seam_edges.end());
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const std::vector<int> outside = internal::outside_of_closed_components(tm, vpm, fim);
 
-  struct Item { double depth; face_descriptor f; };
+  struct Item { double depth; face_descriptor f; int outside; };
   std::vector<Item> items;
   for(face_descriptor f : faces(tm)) {
+    const int side = outside[static_cast<std::size_t>(get(fim, f))];
+    if(side != 0) {  // a face of a closed component: only if it faces the viewer
+      std::vector<P> c;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) c.push_back(q[get(vim, v)]);
+      if(c.size() >= 3 && side * internal::screen_normal_z(c) < 0) continue;
+    }
     double d = 0;
     for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) d += q[get(vim, v)][2];
-    items.push_back({d / double(CGAL::vertices_around_face(halfedge(f, tm), tm).size()), f});
+    items.push_back({d / double(CGAL::vertices_around_face(halfedge(f, tm), tm).size()), f, side});
   }
   std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.depth < b.depth; });
 
@@ -139,7 +155,7 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
       << num(options.width) << "\" height=\"" << num(options.height) << "\" viewBox=\"0 0 " << num(options.width) << ' '
       << num(options.height) << "\">\n<desc>CGAL_QD segmentation: " << num_faces(tm)
       << " faces in their chart colours, seams in black</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n"
-      << "<g stroke-linejoin=\"round\">\n";
+      << "<g stroke-linejoin=\"round\" stroke-width=\"0.6\">\n";
   for(const Item& it : items) {
     std::vector<P> c;
     for(auto v : CGAL::vertices_around_face(halfedge(it.f, tm), tm)) c.push_back(q[get(vim, v)]);
@@ -148,13 +164,15 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
         w{{c[2][0] - c[0][0], c[2][1] - c[0][1], c[2][2] - c[0][2]}};
     const P n{{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}};
     const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const double facing = l > 0 ? n[2] / l : 0;  // the light comes from the viewer
+    // the light comes from the viewer; a closed component turned inside out
+    // (negative volume) is lit from its outside too
+    const double facing = l > 0 ? (it.outside < 0 ? -n[2] : n[2]) / l : 0;
     const double shade = facing >= 0 ? 0.35 + 0.65 * facing : 0.25 + 0.2 * -facing;
     const std::array<unsigned char, 3> base = palette[static_cast<std::size_t>(get(face_chart, it.f))];
     std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", int(base[0] * shade), int(base[1] * shade),
                   int(base[2] * shade));
     const std::string color = buffer;
-    out << "<polygon fill=\"" << color << "\" stroke=\"" << color << "\" stroke-width=\"0.3\" points=\"";
+    out << "<polygon fill=\"" << color << "\" stroke=\"" << color << "\" points=\"";
     for(std::size_t k = 0; k < c.size(); ++k) {
       const auto a = px(c[k]);
       out << (k ? " " : "") << num(a[0]) << ',' << num(a[1]);
