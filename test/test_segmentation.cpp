@@ -24,6 +24,7 @@
 #include <CGAL_QD/smooth_segmentation_seams.h>
 #include <CGAL_QD/vsa_segmentation.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Variational_shape_approximation.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -782,6 +783,48 @@ BOOST_AUTO_TEST_CASE(deterministic_and_parallel_equals_sequential)
   }
 #endif
   expect_valid_segmentation(tm, a, ra);
+}
+
+// A mesh with exact constructions (Epeck), as many CGAL users keep theirs: the
+// library reads its points as doubles, so the segmentation, its flattening
+// and its smoothed seams are those of the same mesh with Epick, face for face
+BOOST_AUTO_TEST_CASE(exact_constructions_kernel_gives_the_same_segmentation)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
+  const Soup soup = torus(32, 16);
+  const Surface_mesh tm = make<Surface_mesh>(soup);
+  const Exact_mesh em = make<Exact_mesh>(soup);
+  BOOST_REQUIRE(num_faces(em) == num_faces(tm));
+  Chart_map<Surface_mesh> chart;
+  Chart_map<Exact_mesh> exact_chart;
+  const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  const auto er = QD::segment_quasi_developable(em, boost::make_assoc_property_map(exact_chart));
+  BOOST_REQUIRE(r);
+  BOOST_REQUIRE(er);
+  BOOST_TEST(er.number_of_charts == r.number_of_charts);
+  BOOST_TEST(er.number_of_charts > 1u);
+  // the faces are numbered alike in both meshes
+  bool same = true;
+  for(auto f : faces(tm)) same = same && exact_chart.at(Exact_mesh::Face_index(std::size_t(f))) == chart.at(f);
+  BOOST_TEST(same);
+  BOOST_TEST((er.corner_uv == r.corner_uv));
+  expect_valid_segmentation(em, exact_chart, er);
+  // the seams smoothed into a new mesh of each kernel
+  Surface_mesh out;
+  Exact_mesh exact_out;
+  Chart_map<Surface_mesh> out_chart;
+  Chart_map<Exact_mesh> exact_out_chart;
+  const auto s = QD::smooth_segmentation_seams(tm, boost::make_assoc_property_map(chart), r, out,
+                                                boost::make_assoc_property_map(out_chart));
+  const auto es = QD::smooth_segmentation_seams(em, boost::make_assoc_property_map(exact_chart), er, exact_out,
+                                                 boost::make_assoc_property_map(exact_out_chart));
+  BOOST_REQUIRE(s);
+  BOOST_REQUIRE(es);
+  BOOST_TEST(es.kept == s.kept);
+  BOOST_TEST(num_faces(exact_out) == num_faces(out));
+  BOOST_TEST(es.smoothing.curves_smoothed == s.smoothing.curves_smoothed);
+  BOOST_TEST(es.smoothing.zigzag_after == s.smoothing.zigzag_after);
 }
 
 BOOST_AUTO_TEST_CASE(steps_can_be_switched_and_thresholds_hold)
