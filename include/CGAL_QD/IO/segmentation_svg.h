@@ -133,16 +133,16 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
 
   struct Item { double depth; face_descriptor f; int outside; };
   std::vector<Item> items;
+  std::vector<P> c;
   for(face_descriptor f : faces(tm)) {
+    c.clear();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) c.push_back(q[get(vim, v)]);
+    // a face of a closed component only if it faces the viewer
     const int side = outside[static_cast<std::size_t>(get(fim, f))];
-    if(side != 0) {  // a face of a closed component: only if it faces the viewer
-      std::vector<P> c;
-      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) c.push_back(q[get(vim, v)]);
-      if(c.size() >= 3 && side * internal::screen_normal_z(c) < 0) continue;
-    }
+    if(side != 0 && c.size() >= 3 && side * internal::screen_normal_z(c) < 0) continue;
     double d = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) d += q[get(vim, v)][2];
-    items.push_back({d / double(CGAL::vertices_around_face(halfedge(f, tm), tm).size()), f, side});
+    for(const P& p : c) d += p[2];
+    items.push_back({d / double(c.size()), f, side});
   }
   std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.depth < b.depth; });
 
@@ -157,7 +157,7 @@ Error_code write_segmentation_SVG(std::ostream& out, const TriangleMesh& tm, con
       << " faces in their chart colours, seams in black</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n"
       << "<g stroke-linejoin=\"round\" stroke-width=\"0.6\">\n";
   for(const Item& it : items) {
-    std::vector<P> c;
+    c.clear();
     for(auto v : CGAL::vertices_around_face(halfedge(it.f, tm), tm)) c.push_back(q[get(vim, v)]);
     if(c.size() < 3) continue;
     const P u{{c[1][0] - c[0][0], c[1][1] - c[0][1], c[1][2] - c[0][2]}},
