@@ -507,6 +507,85 @@ BOOST_AUTO_TEST_CASE(oriented_manifold_soup_test_is_the_pmp_one)
 #endif
 }
 
+// The repair calls CGAL's merges of duplicate points and polygons only where
+// a sort finds duplicates: the sort says what the merges would do (merge
+// nothing, or something) on random soups with points given twice (0 and -0
+// among them), triangles given again rotated or reversed, and quads, and on
+// CGAL's meshes.
+BOOST_AUTO_TEST_CASE(duplicate_checks_are_those_of_the_pmp_merges)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto check = [](std::vector<Point> points, std::vector<Polygon> polygons, const std::string& what) {
+    const bool points_twice = QD::internal::has_duplicate_points(points);
+    BOOST_TEST(points_twice == (PMP::merge_duplicate_points_in_polygon_soup(points, polygons) > 0), what);
+    QD::internal::remove_invalid_polygons(polygons);  // as the repair does between the two
+    const QD::internal::Duplicate_triangles found = QD::internal::find_duplicate_triangles(polygons);
+    const std::size_t merged = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+    if(found != QD::internal::Duplicate_triangles::NOT_ALL_TRIANGLES)
+      BOOST_TEST((found == QD::internal::Duplicate_triangles::SOME) == (merged > 0), what);
+    return std::make_pair(points_twice, found);
+  };
+  const std::vector<Point> square = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)};
+  BOOST_TEST((check(square, {{0, 1, 2}, {0, 2, 3}}, "square") ==
+              std::make_pair(false, QD::internal::Duplicate_triangles::NONE)));
+  BOOST_TEST((check(square, {{0, 1, 2}, {2, 0, 1}}, "rotated") ==
+              std::make_pair(false, QD::internal::Duplicate_triangles::SOME)));
+  BOOST_TEST((check(square, {{0, 1, 2}, {2, 1, 0}}, "reversed") ==
+              std::make_pair(false, QD::internal::Duplicate_triangles::SOME)));
+  BOOST_TEST((check(square, {{0, 1, 2, 3}, {0, 1, 2}}, "quad") ==
+              std::make_pair(false, QD::internal::Duplicate_triangles::NOT_ALL_TRIANGLES)));
+  std::vector<Point> signed_zero = square;
+  signed_zero.push_back(Point(-0.0, 0, 0));
+  BOOST_TEST(check(signed_zero, {{0, 1, 2}, {4, 2, 3}}, "0 and -0").first);
+
+  std::mt19937 rng(11);
+  std::size_t with_points = 0, with_triangles = 0;
+  for(int round = 0; round < 300; ++round) {
+    std::vector<Point> points;
+    const std::size_t n = 6 + rng() % 20;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(i > 0 && rng() % 12 == 0) {
+        const Point& p = points[rng() % i];
+        points.push_back(rng() % 2 == 0 ? p : Point(p.x() == 0 ? -0.0 : p.x(), p.y(), p.z()));
+      } else {
+        points.push_back(Point(double(rng() % 4), double(rng() % 4) * 0.5, double(rng() % 3)));
+      }
+    }
+    std::vector<Polygon> polygons;
+    for(std::size_t k = 0; k < 3 + rng() % 12; ++k) {
+      if(!polygons.empty() && rng() % 6 == 0) {
+        Polygon p = polygons[rng() % polygons.size()];
+        if(rng() % 2 == 0) std::reverse(p.begin(), p.end());
+        std::rotate(p.begin(), p.begin() + 1, p.end());
+        polygons.push_back(p);
+        continue;
+      }
+      std::set<std::size_t> corners;
+      const std::size_t size = round % 10 == 0 && rng() % 3 == 0 ? 4 : 3;
+      while(corners.size() < size) corners.insert(rng() % n);
+      Polygon p(corners.begin(), corners.end());
+      std::shuffle(p.begin(), p.end(), rng);
+      polygons.push_back(p);
+    }
+    const auto found = check(points, polygons, "random soup " + std::to_string(round));
+    with_points += found.first ? 1 : 0;
+    with_triangles += found.second == QD::internal::Duplicate_triangles::SOME ? 1 : 0;
+  }
+  BOOST_TEST(with_points > 20u);  // both answers are seen
+  BOOST_TEST(with_points < 280u);
+  BOOST_TEST(with_triangles > 20u);
+  BOOST_TEST(with_triangles < 280u);
+
+#ifdef CGAL_QD_DEMO_MESH_DIR
+  for(const std::string name : {"fandisk.off", "elephant.off", "cow.off", "bunny00.off"}) {
+    std::vector<Point> points;
+    std::vector<Polygon> polygons;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(CGAL_QD_DEMO_MESH_DIR) + "/" + name, points, polygons));
+    check(points, polygons, name);
+  }
+#endif
+}
+
 // Random mutations of valid files in every format: the reader and the repair
 // never throw or crash, and whatever they accept is a usable mesh.
 BOOST_AUTO_TEST_CASE(fuzzed_files_give_a_usable_mesh_or_a_named_error)

@@ -14,6 +14,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/internal/oriented_manifold_soup.h>
+#include <CGAL_QD/internal/soup_duplicates.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/parameters.h>
 
@@ -377,9 +378,12 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<Point> points, std::vector
     if(!internal::is_finite_point(points[i]))
       return fail(Error_code::INVALID_COORDINATES, "point " + std::to_string(i) + " has a NaN or infinite coordinate");
 
-  r.duplicate_points_merged = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  // CGAL's merges, where a sort finds something for them to merge
+  if(internal::has_duplicate_points(points))
+    r.duplicate_points_merged = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
   r.invalid_polygons_removed = internal::remove_invalid_polygons(polygons);
-  r.duplicate_polygons_removed = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+  if(internal::find_duplicate_triangles(polygons) != internal::Duplicate_triangles::NONE)
+    r.duplicate_polygons_removed = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
   r.isolated_points_removed = PMP::remove_isolated_points_in_polygon_soup(points, polygons);
   if(polygons.empty()) return fail(Error_code::EMPTY_MESH, "no polygon has 3 distinct corners");
 
