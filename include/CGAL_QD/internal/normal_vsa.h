@@ -306,7 +306,8 @@ private:
   // the flood with every copy, as CGAL's class floods
   void partition_with_copies()
   {
-    flood([&](std::size_t g, std::size_t p) { queue(g, p); }, [](const Face_to_integrate&) { return true; });
+    flood([&](std::size_t g, std::size_t p) { queue(g, p); }, [](std::size_t) {},
+          [](const Face_to_integrate&) { return true; });
   }
 
   // the flood without the copies; false where two entries had the same error
@@ -324,13 +325,14 @@ private:
       }
       if(k < 3) q[k] = std::uint32_t(p);
       queue(g, p);
-    }, [&](const Face_to_integrate& taken) { return m_queue.empty() || m_queue.front().error != taken.error; });
+    }, [&](std::size_t g) { prefetch(&m_queued[g]); }, [&](const Face_to_integrate& taken) { return m_queue.empty() || m_queue.front().error != taken.error; });
   }
 
-  // the flood with `push(face, proxy)`; it stops, returning false, where
+  // the flood with `push(face, proxy)`, which reads what `ahead(face)` asks
+  // for besides the face's chart and normal; it stops, returning false, where
   // `go_on(entry just taken)` is false
-  template <class Push, class GoOn>
-  bool flood(const Push& push, const GoOn& go_on)
+  template <class Push, class Ahead, class GoOn>
+  bool flood(const Push& push, const Ahead& ahead, const GoOn& go_on)
   {
     std::fill(m_proxy_of.begin(), m_proxy_of.end(), no_face);
     // a binary heap, as std::priority_queue keeps it, whose storage is kept
@@ -343,16 +345,24 @@ private:
     }
     // On a large mesh the faces taken from the queue lie far apart in memory,
     // and most of the time went into waiting for them (bunny00 subdivided
-    // once, 302K faces). The loop asks for them ahead: the neighbours of the
-    // face taken while the queue is reordered, the next face's neighbours and
-    // chart a turn ahead. The order of everything is the same.
+    // once, 302K faces). The loop asks for them ahead: what it reads of the
+    // neighbours of the face taken (their charts, normals and, without
+    // copies, the proxies they are queued with) and their own neighbours
+    // (the queue often gives one of them next) while the queue is reordered,
+    // the next face's neighbours and chart a turn ahead. The order of
+    // everything is the same.
     while(!m_queue.empty()) {
       const Face_to_integrate c = m_queue.front();
       const bool taken = m_proxy_of[c.face] != no_face;
       const std::array<std::uint32_t, 3>& next = m_next_to[c.face];
       if(!taken)
         for(std::uint32_t g : next)
-          if(g != no_face) prefetch(&m_geo[g]);
+          if(g != no_face) {
+            prefetch(&m_proxy_of[g]);
+            ahead(g);
+            prefetch(&m_geo[g]);
+            prefetch(&m_next_to[g]);
+          }
       std::pop_heap(m_queue.begin(), m_queue.end());
       m_queue.pop_back();
       if(!go_on(c)) return false;
