@@ -309,6 +309,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   result.max_number_of_proxies = max_proxies;
 
   internal::Normal_vsa vsa(geo, internal::face_neighbours(tm, fim), internal::faces_in_order(tm, fim));
+  vsa.fit_in_parallel(internal::number_of_workers<ConcurrencyTag>() > 1);
   vsa.bootstrap();
   const std::size_t first_proxies = vsa.number_of_proxies();
   vsa.run(relaxations);
@@ -319,8 +320,14 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     return result.chart_error[k] > tolerance && result.chart_area[k] >= result.min_chart_area;
   };
   for(;;) {
-    chart = vsa.proxy_of();
-    internal::chart_errors(tm, geo, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
+    // the charts' errors from the proxies' last fit where it was to them
+    // (the same numbers), else measured over the mesh
+    if(vsa.fitted_to_charts()) {
+      vsa.chart_errors(result.chart_error, result.chart_area);
+    } else {
+      chart = vsa.proxy_of();
+      internal::chart_errors(tm, geo, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
+    }
     std::size_t violating = 0;
     for(std::size_t k = 0; k < result.chart_error.size(); ++k) violating += violates(k) ? 1 : 0;
     if(violating == 0) { result.tolerance_reached = true; break; }
@@ -334,6 +341,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     vsa.run(relaxations);
   }
 
+  chart = vsa.proxy_of();
   std::size_t n = internal::make_charts_connected(tm, fim, chart);
   n = internal::merge_charts_within_tolerance(tm, geo, fim, tolerance, n, chart);
   internal::chart_errors(tm, geo, fim, n, proxy_of, result.chart_error, result.chart_area);

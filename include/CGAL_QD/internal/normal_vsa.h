@@ -19,6 +19,7 @@
 // segmentation of a 75K-face mesh.
 
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
@@ -121,6 +122,7 @@ public:
       seed = m_order[next];
     }
     for(const std::vector<std::size_t>& patch : components) m_proxies.push_back(fit(patch.begin(), patch.end()));
+    m_fitted = false;  // fitted to the faces in another order than `m_order`
   }
 
   // `iterations` rounds of flooding from the seeds and refitting; the total error
@@ -197,6 +199,28 @@ public:
   // copy since (see `partition()`)
   bool floods_with_copies() const { return m_ties; }
 
+  // whether the proxies are fitted to their charts in parallel (each on its
+  // own, so the same numbers), on the threads of CGAL::Parallel_tag
+  void fit_in_parallel(bool parallel) { m_parallel = parallel; }
+
+  // Whether every proxy was last fitted to its chart's faces in the order of
+  // `m_order` (by a relaxation), so that its error and area are those
+  // `chart_errors()` (vsa_segmentation.h) computes of the chart, to the last
+  // bit: the same sums in the same order.
+  bool fitted_to_charts() const { return m_fitted; }
+
+  // the normalised L2,1 error and the area of every chart, as
+  // `chart_errors()` computes them; only where `fitted_to_charts()`
+  void chart_errors(std::vector<double>& error, std::vector<double>& area) const
+  {
+    error.resize(m_proxies.size());
+    area.resize(m_proxies.size());
+    for(std::size_t k = 0; k < m_proxies.size(); ++k) {
+      area[k] = m_proxies[k].area;
+      error[k] = area[k] > 0 ? m_proxies[k].error / area[k] : 0.;
+    }
+  }
+
   // the proxy of every face
   std::vector<std::size_t> proxy_of() const
   {
@@ -212,6 +236,7 @@ private:
     std::array<double, 3> normal;
     std::size_t seed;
     double error;
+    double area;  // of its faces
   };
   // 16 bytes: the heap moves these around more than anything else
   struct Face_to_integrate
@@ -250,11 +275,12 @@ private:
   template <class Iterator>
   Proxy fit(Iterator begin, Iterator end) const
   {
-    double s[3] = {0., 0., 0.};
+    double s[3] = {0., 0., 0.}, area = 0.;
     for(Iterator it = begin; it != end; ++it) {
       if(end - it > 16) prefetch(&m_geo[*(it + 16)]);
       const std::array<double, 4>& d = m_geo[*it];
       for(int i = 0; i < 3; ++i) s[i] += d[3] * d[i];
+      area += d[3];
     }
     const double l = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
     Proxy p;
@@ -271,6 +297,7 @@ private:
       }
     }
     p.error = sum;
+    p.area = area;
     return p;
   }
 
@@ -397,12 +424,20 @@ private:
       const std::size_t f = m_order[i];
       m_faces[m_fill[m_proxy_of[f]]++] = f;
     }
-    for(std::size_t p = 0; p < n; ++p) {
+    // each proxy on its own: on both threads where asked
+    auto refit_proxy = [this](std::size_t p) {
       if(m_start[p] < m_start[p + 1])
         m_proxies[p] = fit(m_faces.begin() + m_start[p], m_faces.begin() + m_start[p + 1]);
-      else
+      else {
         m_proxies[p].error = 0;  // its seed went to another proxy: it keeps its normal, with no face
-    }
+        m_proxies[p].area = 0;
+      }
+    };
+    if(m_parallel)
+      for_each_index<CGAL::Parallel_tag>(n, refit_proxy);
+    else
+      for_each_index<CGAL::Sequential_tag>(n, refit_proxy);
+    m_fitted = true;
   }
 
   bool add_to_furthest_proxy()
@@ -434,6 +469,7 @@ private:
     const std::size_t one[1] = {f};
     Proxy p = fit(one, one + 1);
     const std::size_t before = m_proxy_of[f];
+    m_fitted = false;
     m_proxies[before].error -= error(f, m_proxies[before].normal);
     m_proxy_of[f] = static_cast<std::uint32_t>(m_proxies.size());
     m_proxies.push_back(p);
@@ -447,6 +483,8 @@ private:
   // by number, in a flood without copies: the proxies a face is queued with
   std::vector<std::array<std::uint32_t, 3>> m_queued;
   bool m_ties = false;  // whether a flood met two entries of the same error
+  bool m_fitted = false;  // see `fitted_to_charts()`
+  bool m_parallel = false;  // see `fit_in_parallel()`
   std::vector<Proxy> m_proxies;
   std::vector<Face_to_integrate> m_queue;
   std::vector<std::size_t> m_start, m_fill, m_faces;  // the faces of every proxy, by proxy
