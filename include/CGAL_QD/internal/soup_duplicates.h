@@ -9,7 +9,7 @@
 // there are none, CGAL's `merge_duplicate_points_in_polygon_soup()` and
 // `merge_duplicate_polygons_in_polygon_soup()` would leave the soup as it is,
 // and they build a `std::map` of every point and a hash set of every polygon
-// to find that out (a third of the time a mesh of a million faces took to be
+// to find that out (a quarter of the time a mesh of a million faces took to be
 // read and repaired).
 
 #include <CGAL/Kernel/global_functions.h>
