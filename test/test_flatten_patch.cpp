@@ -12,14 +12,19 @@
 #include <CGAL_QD/distortion.h>
 #include <CGAL_QD/flatten_patch.h>
 #include <CGAL_QD/optimize_flattening.h>
+#include <CGAL_QD/internal/amd_order_of_triangles.h>
 #include <CGAL_QD/internal/arap_optimizer.h>
+#include <CGAL_QD/internal/lower_triangle.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <memory>
 #include <random>
 
 namespace QD = CGAL_QD;
@@ -483,6 +488,131 @@ BOOST_AUTO_TEST_CASE(amd_ordering_on_the_pattern_is_eigens)
       BOOST_TEST(!(reversed.indices().array() == eigen.indices().array()).all());
     }
   }
+}
+
+// Lower_triangle_assembly makes, from entries given in any order with
+// repeats, the matrix Eigen's setFromTriplets() makes of the same triplets,
+// to the last bit (repeats summed in the order given), its columns sorted
+BOOST_AUTO_TEST_CASE(lower_triangle_assembly_is_set_from_triplets)
+{
+  std::mt19937 rng(5);
+  for(const long n : {1L, 7L, 60L, 500L}) {
+    std::uniform_int_distribution<long> index(0, n - 1);
+    std::uniform_real_distribution<double> value(-1., 1.);
+    std::vector<Eigen::Triplet<double>> t;
+    QD::internal::Lower_triangle_assembly ours(n, 0);
+    for(long e = 0; e < 8 * n; ++e) {
+      long i = index(rng), j = e % 3 == 0 ? i : index(rng);  // every third on the diagonal
+      if(i < j) std::swap(i, j);
+      // values of different magnitudes, so that the order of a sum shows
+      const double v = value(rng) * std::pow(10., double(e % 5) - 2.) + 1. / 3.;
+      for(int again = 0; again < (e % 4 == 0 ? 3 : 1); ++again) {  // repeats, some in a row
+        t.emplace_back(i, j, v * (again + 1));
+        ours.add(i, j, v * (again + 1));
+      }
+    }
+    Eigen::SparseMatrix<double> expected(n, n), A;
+    expected.setFromTriplets(t.begin(), t.end());
+    ours.assemble(A);
+    BOOST_REQUIRE(A.isCompressed());
+    BOOST_REQUIRE_EQUAL(A.rows(), n);
+    BOOST_REQUIRE_EQUAL(A.cols(), n);
+    BOOST_REQUIRE_EQUAL(A.nonZeros(), expected.nonZeros());
+    bool same = true;
+    for(long j = 0; j <= n; ++j) same = same && A.outerIndexPtr()[j] == expected.outerIndexPtr()[j];
+    for(Eigen::Index k = 0; k < A.nonZeros(); ++k)
+      same = same && A.innerIndexPtr()[k] == expected.innerIndexPtr()[k] && A.valuePtr()[k] == expected.valuePtr()[k];
+    BOOST_TEST(same, "n = " << n);
+  }
+  // nothing added: an empty matrix of the size asked
+  Eigen::SparseMatrix<double> E;
+  QD::internal::Lower_triangle_assembly(4, 0).assemble(E);
+  BOOST_TEST(E.rows() == 4);
+  BOOST_TEST(E.nonZeros() == 0);
+}
+
+// amd_order_of_triangles() orders the graph of a mesh once (through the
+// cache), and the systems on a part of its vertices numbered in that order
+// (the interior, as LPFB+IP solves it) have no more fill than the whole;
+// Simplicial_LDLT_natural_solver factorises them in that order and solves as
+// Eigen's SimplicialLDLT with the natural ordering does, to the last bit
+BOOST_AUTO_TEST_CASE(one_amd_ordering_of_a_mesh_serves_the_systems_on_its_parts)
+{
+  const std::size_t rings = 20, sectors = 60;
+  const Soup soup = polar(rings, sectors, sphere_cap(1.));
+  const std::size_t n = soup.points.size();
+  std::vector<std::size_t> corner;
+  for(const Tri& t : soup.triangles) corner.insert(corner.end(), t.begin(), t.end());
+  const auto cache = std::make_shared<QD::Ordering_cache>();
+  const std::vector<int> order = QD::internal::amd_order_of_triangles(n, corner, cache.get());
+  BOOST_REQUIRE_EQUAL(order.size(), n);
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  bool permutation = true;
+  for(std::size_t i = 0; i < n; ++i) permutation = permutation && sorted[i] == int(i);
+  BOOST_REQUIRE(permutation);
+  BOOST_TEST(cache->misses() == 1u);
+  BOOST_TEST((QD::internal::amd_order_of_triangles(n, corner, cache.get()) == order));
+  BOOST_TEST(cache->hits() == 1u);
+  std::vector<std::size_t> position(n);
+  for(std::size_t k = 0; k < n; ++k) position[std::size_t(order[k])] = k;
+
+  // a graph Laplacian plus a diagonal on the vertices kept (all, or all but
+  // the outer ring), numbered in increasing `rank`
+  typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> Natural;
+  auto system = [&](bool interior, const std::function<std::size_t(std::size_t)>& rank) {
+    std::vector<std::pair<std::size_t, std::size_t>> kept;
+    for(std::size_t v = 0; v < n; ++v)
+      if(!interior || v + sectors < n) kept.push_back({rank(v), v});
+    std::sort(kept.begin(), kept.end());
+    std::vector<long> row(n, -1);
+    for(std::size_t r = 0; r < kept.size(); ++r) row[kept[r].second] = long(r);
+    std::vector<Eigen::Triplet<double>> t;
+    std::vector<double> d(kept.size(), 0.1);
+    for(std::size_t c = 0; c < corner.size(); ++c) {
+      const long a = row[corner[c]], b = row[corner[c % 3 == 2 ? c - 2 : c + 1]];
+      if(a < 0 || b < 0) continue;
+      const double w = 0.5 + 0.01 * double(c % 7);
+      t.emplace_back((std::max)(a, b), (std::min)(a, b), -w);
+      d[std::size_t(a)] += w;
+      d[std::size_t(b)] += w;
+    }
+    for(std::size_t r = 0; r < kept.size(); ++r) t.emplace_back(long(r), long(r), d[r]);
+    Eigen::SparseMatrix<double> A(long(kept.size()), long(kept.size()));
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+  };
+  auto in_order = [&](std::size_t v) { return position[v]; };
+  auto by_index = [](std::size_t v) { return v; };
+  auto factor_size = [](const Eigen::SparseMatrix<double>& A) {
+    Natural ldlt(A);
+    BOOST_REQUIRE(ldlt.info() == Eigen::Success);
+    return ldlt.matrixL().nestedExpression().nonZeros();
+  };
+  const Eigen::SparseMatrix<double> whole = system(false, in_order), inside = system(true, in_order);
+  BOOST_REQUIRE_EQUAL(inside.rows(), Eigen::Index(n - sectors));
+  BOOST_TEST(factor_size(inside) <= factor_size(whole));
+  // the rings' own numbering has the bandwidth of a ring
+  BOOST_TEST(2 * factor_size(whole) < factor_size(system(false, by_index)));
+
+  Eigen::MatrixXd B(inside.rows(), 2);
+  for(Eigen::Index r = 0; r < B.rows(); ++r) B.row(r) << std::sin(0.3 * double(r)), r % 9 == 0 ? 0. : std::cos(0.2 * double(r));
+  QD::Simplicial_LDLT_natural_solver solver;
+  BOOST_REQUIRE(solver.factorize(inside));
+  BOOST_TEST(solver.order_of_rows() == nullptr);
+  Eigen::MatrixXd X;
+  BOOST_REQUIRE(solver.solve(B, X));
+  const Natural plain(inside);
+  BOOST_TEST((X.array() == plain.solve(B).array()).all());
+  BOOST_TEST((inside.selfadjointView<Eigen::Lower>() * X - B).norm() < 1e-10 * B.norm());
+  std::vector<double> y(std::size_t(2 * B.rows()));
+  for(Eigen::Index r = 0; r < B.rows(); ++r)
+    for(int c = 0; c < 2; ++c) y[std::size_t(2 * r + c)] = B(r, c);
+  BOOST_REQUIRE(solver.solve_in_order(y.data(), std::size_t(B.rows())));
+  bool same = true;
+  for(Eigen::Index r = 0; r < B.rows(); ++r)
+    for(int c = 0; c < 2; ++c) same = same && y[std::size_t(2 * r + c)] == X(r, c);
+  BOOST_TEST(same);
 }
 
 // with the default solver, and with one that analyses every system ahead on a

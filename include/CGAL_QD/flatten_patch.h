@@ -11,6 +11,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/length_preserved_free_boundary.h>
+#include <CGAL_QD/internal/lower_triangle.h>
 #include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/validation.h>
@@ -153,21 +154,19 @@ private:
       r = halfedge(v, tm) == GT::null_halfedge() || r < 0 ? -1 : n++;
     }
     if(!solver.analyzes_ahead(static_cast<std::size_t>(n))) return;
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(3 * static_cast<std::size_t>(num_faces(tm)) + static_cast<std::size_t>(n));
+    internal::Lower_triangle_assembly t(n, 3 * static_cast<std::size_t>(num_faces(tm)));
     for(typename GT::face_descriptor f : faces(tm)) {
       const typename GT::halfedge_descriptor h = halfedge(f, tm);
       const long r[3] = {row[get(vim, source(h, tm))], row[get(vim, target(h, tm))],
                          row[get(vim, target(next(h, tm), tm))]};
       for(int k = 0; k < 3; ++k) {
         const long ri = r[(k + 1) % 3], rj = r[(k + 2) % 3];
-        if(ri >= 0 && rj >= 0) t.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), 1.);
+        if(ri >= 0 && rj >= 0) t.add((std::max)(ri, rj), (std::min)(ri, rj), 1.);
       }
     }
-    for(long i = 0; i < n; ++i) t.emplace_back(i, i, 1.);
-    Eigen::SparseMatrix<double> pattern(n, n);
-    pattern.setFromTriplets(t.begin(), t.end());
-    std::vector<Eigen::Triplet<double>>().swap(t);
+    for(long i = 0; i < n; ++i) t.add(i, i, 1.);
+    Eigen::SparseMatrix<double> pattern;
+    t.assemble(pattern);
     solver.analyze(pattern);
   }
 
@@ -279,8 +278,7 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
 
   Eigen::MatrixXd X(n, 2);
   if(n > 0) {
-    std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(3 * result.number_of_faces + n);
+    internal::Lower_triangle_assembly entries(static_cast<long>(n), 3 * result.number_of_faces);
     std::vector<double> diagonal(n, 0.);
     Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, 2);
     for(face_descriptor f : faces(tm)) {
@@ -299,7 +297,7 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
         if(ri >= 0) diagonal[ri] += w;
         if(rj >= 0) diagonal[rj] += w;
         if(ri >= 0 && rj >= 0) {
-          triplets.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), -w);
+          entries.add((std::max)(ri, rj), (std::min)(ri, rj), -w);
         } else if(ri >= 0) {
           const internal::Uv_pair& p = buffer[get(vim, v[j])];
           B(ri, 0) += w * p.x;
@@ -311,10 +309,9 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
         }
       }
     }
-    for(std::size_t r = 0; r < n; ++r) triplets.emplace_back(r, r, diagonal[r]);
-    Eigen::SparseMatrix<double> A(n, n);
-    A.setFromTriplets(triplets.begin(), triplets.end());
-    std::vector<Eigen::Triplet<double>>().swap(triplets);  // freed before the factorisation
+    for(std::size_t r = 0; r < n; ++r) entries.add(static_cast<long>(r), static_cast<long>(r), diagonal[r]);
+    Eigen::SparseMatrix<double> A;
+    entries.assemble(A);  // the entries are freed before the factorisation
     result.number_of_nonzeros = static_cast<std::size_t>(A.nonZeros());
     result.time_assembly_ms = internal::milliseconds_since(t);
 

@@ -356,31 +356,25 @@ private:
   const char* m_name;
 };
 
-/// \ingroup PkgCGAL_QDRef
-/// Eigen's `SimplicialLDLT` with AMD ordering. Given an `Ordering_cache`
-/// (shared by its copies), a pattern already ordered through that cache takes
-/// its ordering from it: the same factorisation, without computing the
-/// ordering again.
-struct Simplicial_LDLT_solver
-    : Eigen_symmetric_solver<
-          Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, internal::Cached_AMD_ordering<int>>>
+namespace internal {
+
+// Eigen's `SimplicialLDLT` with the fill-reducing ordering `Ordering`, and
+// its two-column solves in the order of the factorisation
+template <class Ordering>
+class Simplicial_LDLT_base
+    : public Eigen_symmetric_solver<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Ordering>>
 {
-  Simplicial_LDLT_solver() : Eigen_symmetric_solver("SimplicialLDLT") {}
-  explicit Simplicial_LDLT_solver(std::shared_ptr<Ordering_cache> orderings)
-      : Eigen_symmetric_solver("SimplicialLDLT"), m_orderings(std::move(orderings))
-  {}
-  bool factorize(const Matrix& lower)
-  {
-    const internal::Ordering_cache_scope scope(m_orderings.get());
-    return Eigen_symmetric_solver::factorize(lower);
-  }
+  typedef Eigen_symmetric_solver<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Ordering>> Base;
+
+public:
+  explicit Simplicial_LDLT_base(const char* name) : Base(name) {}
 
   /// after a successful `factorize()`: the position in the factorisation's
   /// order of every row of the matrix (its fill-reducing permutation), or
   /// `nullptr` where that order is the matrix's own
   const int* order_of_rows() const
   {
-    const auto* s = eigen_solver();
+    const auto* s = this->eigen_solver();
     return s && s->permutationP().size() > 0 ? s->permutationP().indices().data() : nullptr;
   }
 
@@ -392,18 +386,51 @@ struct Simplicial_LDLT_solver
   /// or where a solution is not finite.
   bool solve_in_order(double* y, std::size_t rows) const
   {
-    const auto* s = eigen_solver();
+    const auto* s = this->eigen_solver();
     if(!s || s->info() != Eigen::Success || static_cast<std::size_t>(s->rows()) != rows ||
        s->matrixL().nestedExpression().innerNonZeroPtr())
       return false;
-    internal::solve_ldlt_interleaved(*s, y);
+    solve_ldlt_interleaved(*s, y);
     for(std::size_t k = 0; k < 2 * rows; ++k)
       if(!std::isfinite(y[k])) return false;
     return true;
   }
+};
+
+} // namespace internal
+
+/// \ingroup PkgCGAL_QDRef
+/// Eigen's `SimplicialLDLT` with AMD ordering. Given an `Ordering_cache`
+/// (shared by its copies), a pattern already ordered through that cache takes
+/// its ordering from it: the same factorisation, without computing the
+/// ordering again. Its two-column solves can run in the order of the
+/// factorisation (`order_of_rows()`, `solve_in_order()`).
+struct Simplicial_LDLT_solver : internal::Simplicial_LDLT_base<internal::Cached_AMD_ordering<int>>
+{
+  Simplicial_LDLT_solver() : Simplicial_LDLT_base("SimplicialLDLT") {}
+  explicit Simplicial_LDLT_solver(std::shared_ptr<Ordering_cache> orderings)
+      : Simplicial_LDLT_base("SimplicialLDLT"), m_orderings(std::move(orderings))
+  {}
+  bool factorize(const Matrix& lower)
+  {
+    const internal::Ordering_cache_scope scope(m_orderings.get());
+    return Simplicial_LDLT_base::factorize(lower);
+  }
 
 private:
   std::shared_ptr<Ordering_cache> m_orderings;
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// Eigen's `SimplicialLDLT` factorising the rows in the matrix's own order,
+/// for systems whose unknowns already come in a fill-reducing order: the
+/// segmentation numbers the vertices of a chart in the AMD order of the
+/// chart's graph, and the systems of its flattening
+/// (the interior vertices) and of its optimisation (all vertices but one)
+/// then both take their order from that one ordering.
+struct Simplicial_LDLT_natural_solver : internal::Simplicial_LDLT_base<Eigen::NaturalOrdering<int>>
+{
+  Simplicial_LDLT_natural_solver() : Simplicial_LDLT_base("SimplicialLDLT, rows in their order") {}
 };
 
 #ifdef CGAL_QD_USE_CHOLMOD

@@ -19,6 +19,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <CGAL_QD/internal/lower_triangle.h>
 #include <CGAL_QD/internal/sse2.h>
 
 #include <algorithm>
@@ -97,20 +98,18 @@ public:
     if(m_unknowns == 0) return true;
     {
       // freed before the factorisation: 144 bytes a face
-      std::vector<Eigen::Triplet<double>> t;
-      t.reserve(9 * m_tri.size() + 4 * m_border.size());
+      Lower_triangle_assembly t(static_cast<long>(m_unknowns), 3 * m_tri.size() + m_border.size());
       auto add_edge = [&](std::size_t i, std::size_t j, double w) {
         const long ri = row[i], rj = row[j];
-        if(ri >= 0) t.emplace_back(ri, ri, w);
-        if(rj >= 0) t.emplace_back(rj, rj, w);
-        if(ri >= 0 && rj >= 0) t.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), -w);
+        if(ri >= 0) t.add(ri, ri, w);
+        if(rj >= 0) t.add(rj, rj, w);
+        if(ri >= 0 && rj >= 0) t.add((std::max)(ri, rj), (std::min)(ri, rj), -w);
       };
       for(std::size_t f = 0; f < m_tri.size(); ++f)
         for(int k = 0; k < 3; ++k) add_edge(m_tri[f][(k + 1) % 3], m_tri[f][(k + 2) % 3], m_cot[f][k]);
       if(m_lambda > 0)
         for(const auto& e : m_border) add_edge(e[0], e[1], m_lambda);
-      m_matrix.resize(static_cast<Eigen::Index>(m_unknowns), static_cast<Eigen::Index>(m_unknowns));
-      m_matrix.setFromTriplets(t.begin(), t.end());
+      t.assemble(m_matrix);
     }
     const bool ok = m_solver.factorize(m_matrix);
     m_matrix = Eigen::SparseMatrix<double>();  // the solves need only the factor

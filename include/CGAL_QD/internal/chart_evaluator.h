@@ -16,6 +16,7 @@
 #include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/add_triangles.h>
+#include <CGAL_QD/internal/amd_order_of_triangles.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/flattening_cache.h>
 #include <CGAL_QD/internal/hopeless_trial.h>
@@ -154,11 +155,15 @@ public:
 
 private:
   // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
-  Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges,
+  Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges_in,
                        std::vector<std::array<double, 2>>* corner_uv, const std::vector<double>* border_target,
                        const std::vector<std::array<double, 2>>* start_uv, double pull_weight, bool exact,
                        const std::atomic<bool>* stop) const
   {
+    // the vertices of the chart cut open in the AMD order of its graph: the
+    // systems of its flattening and of its optimisation, each on a part of
+    // the vertices, take their order from that one ordering (`solver()`)
+    const Wedges<TriangleMesh> wedges = in_amd_order(wedges_in);
     Chart_report rep;
     rep.number_of_faces = n_faces;
     Mesh sm;
@@ -457,8 +462,26 @@ private:
                                                                               : area_preservation))));
   }
 
-  // the solver of every flattening, with the evaluator's orderings
-  Simplicial_LDLT_solver solver() const { return Simplicial_LDLT_solver(m_orderings); }
+  // the wedges renumbered in the AMD order of the chart's graph (taken from
+  // the evaluator's orderings where the chart was ordered before)
+  Wedges<TriangleMesh> in_amd_order(const Wedges<TriangleMesh>& w) const
+  {
+    const std::vector<int> order = amd_order_of_triangles(w.size(), w.wedge_of_corner, m_orderings.get());
+    Wedges<TriangleMesh> out;
+    std::vector<std::size_t> position(w.size());
+    out.vertex_of_wedge.resize(w.size());
+    for(std::size_t k = 0; k < w.size(); ++k) {
+      position[static_cast<std::size_t>(order[k])] = k;
+      out.vertex_of_wedge[k] = w.vertex_of_wedge[static_cast<std::size_t>(order[k])];
+    }
+    out.wedge_of_corner.resize(w.wedge_of_corner.size());
+    for(std::size_t c = 0; c < w.wedge_of_corner.size(); ++c) out.wedge_of_corner[c] = position[w.wedge_of_corner[c]];
+    return out;
+  }
+
+  // the solver of every flattening: the rows come in the order of the
+  // vertices, which `in_amd_order()` made a fill-reducing one
+  Simplicial_LDLT_natural_solver solver() const { return Simplicial_LDLT_natural_solver(); }
 
   // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
   template <class UVMap>
