@@ -29,40 +29,42 @@ namespace internal {
 inline std::vector<int> amd_order_of_triangles(std::size_t n, const std::vector<std::size_t>& corner,
                                                Ordering_cache* cache)
 {
-  // both triangles of the pattern: in every column the diagonal, then the
-  // other ends of the edges in the order the triangles give them, each once
-  // (every corner gives the two edges of its triangle that end there)
-  std::vector<int> start(n + 1, 0);
-  for(std::size_t c = 0; c < corner.size(); ++c) start[corner[c] + 1] += 2;
-  for(std::size_t i = 0; i < n; ++i) start[i + 1] += start[i] + 1;
-  std::vector<int> bucket(static_cast<std::size_t>(start[n])), fill(n, 1);
-  for(std::size_t i = 0; i < n; ++i) bucket[static_cast<std::size_t>(start[i])] = static_cast<int>(i);
-  for(std::size_t t = 0; t + 2 < corner.size(); t += 3)
-    for(int k = 0; k < 3; ++k) {
-      const std::size_t a = corner[t + k], b = corner[t + (k + 1) % 3];
-      bucket[static_cast<std::size_t>(start[b] + fill[b]++)] = static_cast<int>(a);
-      bucket[static_cast<std::size_t>(start[a] + fill[a]++)] = static_cast<int>(b);
-    }
   Eigen::SparseMatrix<double> C(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  // room for the AMD routine's elbow room, as it asks for it
-  C.data().reserve(static_cast<Eigen::Index>(bucket.size() + bucket.size() / 5 + 2 * n));
-  C.resizeNonZeros(static_cast<Eigen::Index>(bucket.size()));
-  int* outer = C.outerIndexPtr();
-  int* inner = C.innerIndexPtr();
-  std::vector<std::size_t> seen(n, n);  // the last column that holds a row
-  int nnz = 0;
-  outer[0] = 0;
-  for(std::size_t j = 0; j < n; ++j) {
-    for(int e = start[j]; e < start[j] + fill[j]; ++e) {
-      const std::size_t i = static_cast<std::size_t>(bucket[static_cast<std::size_t>(e)]);
-      if(seen[i] == j) continue;
-      seen[i] = j;
-      inner[nnz++] = static_cast<int>(i);
+  {
+    // both triangles of the pattern: in every column the diagonal, then the
+    // other ends of the edges in the order the triangles give them, each once
+    // (every corner gives the two edges of its triangle that end there)
+    std::vector<int> start(n + 1, 0);
+    for(std::size_t c = 0; c < corner.size(); ++c) start[corner[c] + 1] += 2;
+    for(std::size_t i = 0; i < n; ++i) start[i + 1] += start[i] + 1;
+    std::vector<int> bucket(static_cast<std::size_t>(start[n])), fill(n, 1);
+    for(std::size_t i = 0; i < n; ++i) bucket[static_cast<std::size_t>(start[i])] = static_cast<int>(i);
+    for(std::size_t t = 0; t + 2 < corner.size(); t += 3)
+      for(int k = 0; k < 3; ++k) {
+        const std::size_t a = corner[t + k], b = corner[t + (k + 1) % 3];
+        bucket[static_cast<std::size_t>(start[b] + fill[b]++)] = static_cast<int>(a);
+        bucket[static_cast<std::size_t>(start[a] + fill[a]++)] = static_cast<int>(b);
+      }
+    // room for the AMD routine's elbow room, as it asks for it
+    C.data().reserve(static_cast<Eigen::Index>(bucket.size() + bucket.size() / 5 + 2 * n));
+    C.resizeNonZeros(static_cast<Eigen::Index>(bucket.size()));
+    int* outer = C.outerIndexPtr();
+    int* inner = C.innerIndexPtr();
+    std::vector<std::size_t> seen(n, n);  // the last column that holds a row
+    int nnz = 0;
+    outer[0] = 0;
+    for(std::size_t j = 0; j < n; ++j) {
+      for(int e = start[j]; e < start[j] + fill[j]; ++e) {
+        const std::size_t i = static_cast<std::size_t>(bucket[static_cast<std::size_t>(e)]);
+        if(seen[i] == j) continue;
+        seen[i] = j;
+        inner[nnz++] = static_cast<int>(i);
+      }
+      outer[j + 1] = nnz;
     }
-    outer[j + 1] = nnz;
-  }
-  C.resizeNonZeros(nnz);
-  std::fill(C.valuePtr(), C.valuePtr() + nnz, 0.);
+    C.resizeNonZeros(nnz);
+    std::fill(C.valuePtr(), C.valuePtr() + nnz, 0.);
+  }  // the buckets freed before the ordering
   Ordering_cache::Permutation p;
   Ordering_cache::Key key;
   const bool keyed = cache && Ordering_cache::key_of(C, key);

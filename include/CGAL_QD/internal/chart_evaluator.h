@@ -109,7 +109,8 @@ public:
       compute_wedges(m_corners, m_tm, m_fim, faces, *local, is_cut, wedges);
       for(face_descriptor f : faces) (*local)[get(m_fim, f)] = -1;
     }
-    if(!m_cache) return flatten(faces.size(), wedges, corner_uv, border_target, start_uv, pull_weight, exact, stop);
+    if(!m_cache)
+      return flatten(faces.size(), std::move(wedges), corner_uv, border_target, start_uv, pull_weight, exact, stop);
     // the chart cut open, the fit's targets and start, and the thresholds
     Digest digest;
     const std::uint64_t flags =
@@ -155,7 +156,7 @@ public:
 
 private:
   // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
-  Chart_report flatten(std::size_t n_faces, const Wedges<TriangleMesh>& wedges_in,
+  Chart_report flatten(std::size_t n_faces, Wedges<TriangleMesh> wedges,
                        std::vector<std::array<double, 2>>* corner_uv, const std::vector<double>* border_target,
                        const std::vector<std::array<double, 2>>* start_uv, double pull_weight, bool exact,
                        const std::atomic<bool>* stop) const
@@ -163,7 +164,7 @@ private:
     // the vertices of the chart cut open in the AMD order of its graph: the
     // systems of its flattening and of its optimisation, each on a part of
     // the vertices, take their order from that one ordering (`solver()`)
-    const Wedges<TriangleMesh> wedges = in_amd_order(wedges_in);
+    to_amd_order(wedges);
     Chart_report rep;
     rep.number_of_faces = n_faces;
     Mesh sm;
@@ -464,23 +465,21 @@ private:
 
   // the wedges renumbered in the AMD order of the chart's graph (taken from
   // the evaluator's orderings where the chart was ordered before)
-  Wedges<TriangleMesh> in_amd_order(const Wedges<TriangleMesh>& w) const
+  void to_amd_order(Wedges<TriangleMesh>& w) const
   {
     const std::vector<int> order = amd_order_of_triangles(w.size(), w.wedge_of_corner, m_orderings.get());
-    Wedges<TriangleMesh> out;
     std::vector<std::size_t> position(w.size());
-    out.vertex_of_wedge.resize(w.size());
+    std::vector<typename GT::vertex_descriptor> vertex(w.size());
     for(std::size_t k = 0; k < w.size(); ++k) {
       position[static_cast<std::size_t>(order[k])] = k;
-      out.vertex_of_wedge[k] = w.vertex_of_wedge[static_cast<std::size_t>(order[k])];
+      vertex[k] = w.vertex_of_wedge[static_cast<std::size_t>(order[k])];
     }
-    out.wedge_of_corner.resize(w.wedge_of_corner.size());
-    for(std::size_t c = 0; c < w.wedge_of_corner.size(); ++c) out.wedge_of_corner[c] = position[w.wedge_of_corner[c]];
-    return out;
+    w.vertex_of_wedge.swap(vertex);
+    for(std::size_t& c : w.wedge_of_corner) c = position[c];
   }
 
   // the solver of every flattening: the rows come in the order of the
-  // vertices, which `in_amd_order()` made a fill-reducing one
+  // vertices, which `to_amd_order()` made a fill-reducing one
   Simplicial_LDLT_natural_solver solver() const { return Simplicial_LDLT_natural_solver(); }
 
   // measures the flattening `uv` of `sm` into `rep`; false if it cannot be measured
