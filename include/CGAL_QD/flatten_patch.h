@@ -279,7 +279,6 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
   Eigen::MatrixXd X(n, 2);
   if(n > 0) {
     internal::Lower_triangle_assembly entries(static_cast<long>(n), 3 * result.number_of_faces);
-    std::vector<double> diagonal(n, 0.);
     Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, 2);
     for(face_descriptor f : faces(tm)) {
       const halfedge_descriptor h = halfedge(f, tm);
@@ -294,8 +293,8 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
         const double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
         const double w = 0.5 * (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / std::sqrt(cx * cx + cy * cy + cz * cz);
         const long ri = row[get(vim, v[i])], rj = row[get(vim, v[j])];
-        if(ri >= 0) diagonal[ri] += w;
-        if(rj >= 0) diagonal[rj] += w;
+        if(ri >= 0) entries.add(ri, ri, w);  // the diagonal, summed as it comes
+        if(rj >= 0) entries.add(rj, rj, w);
         if(ri >= 0 && rj >= 0) {
           entries.add((std::max)(ri, rj), (std::min)(ri, rj), -w);
         } else if(ri >= 0) {
@@ -309,7 +308,6 @@ Flattening_result flatten_patch(const TriangleMesh& tm, VertexUVMap uv,
         }
       }
     }
-    for(std::size_t r = 0; r < n; ++r) entries.add(static_cast<long>(r), static_cast<long>(r), diagonal[r]);
     Eigen::SparseMatrix<double> A;
     entries.assemble(A);  // the entries are freed before the factorisation
     result.number_of_nonzeros = static_cast<std::size_t>(A.nonZeros());

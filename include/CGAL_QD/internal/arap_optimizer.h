@@ -97,7 +97,7 @@ public:
       if(!fixed[i]) row[i] = static_cast<long>(m_unknowns++);
     if(m_unknowns == 0) return true;
     {
-      // freed before the factorisation: 144 bytes a face
+      // freed before the factorisation: 48 bytes a face
       Lower_triangle_assembly t(static_cast<long>(m_unknowns), 3 * m_tri.size() + m_border.size());
       auto add_edge = [&](std::size_t i, std::size_t j, double w) {
         const long ri = row[i], rj = row[j];
