@@ -145,6 +145,19 @@ private:
   Ordering_cache* m_before;
 };
 
+// the ordering of the pattern of `C` into `p`: from `cache`, if given, where
+// it holds that pattern, else `compute(p)`, then stored there
+template <class Compute>
+void cached_ordering(Ordering_cache* cache, const Eigen::SparseMatrix<double>& C, Ordering_cache::Permutation& p,
+                     const Compute& compute)
+{
+  Ordering_cache::Key key;
+  const bool keyed = cache && Ordering_cache::key_of(C, key);
+  if(keyed && cache->find(key, p)) return;
+  compute(p);
+  if(keyed) cache->store(key, p);
+}
+
 // Eigen's AMD ordering, taken from the ordering cache of this thread where
 // it holds the pattern (Eigen calls it with the full symmetric matrix)
 template <class StorageIndex>
@@ -156,12 +169,7 @@ struct Cached_AMD_ordering
   template <class MatrixType>
   void operator()(const MatrixType& C, PermutationType& p)
   {
-    Ordering_cache* cache = ordering_cache_of_this_thread();
-    Ordering_cache::Key key;
-    const bool keyed = cache && Ordering_cache::key_of(C, key);
-    if(keyed && cache->find(key, p)) return;
-    amd_ordering_of_symmetric(C, p);
-    if(keyed) cache->store(key, p);
+    cached_ordering(ordering_cache_of_this_thread(), C, p, [&](PermutationType& q) { amd_ordering_of_symmetric(C, q); });
   }
 
 private:

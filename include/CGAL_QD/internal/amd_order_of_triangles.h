@@ -66,12 +66,7 @@ inline std::vector<int> amd_order_of_triangles(std::size_t n, const std::vector<
     std::fill(C.valuePtr(), C.valuePtr() + nnz, 0.);
   }  // the buckets freed before the ordering
   Ordering_cache::Permutation p;
-  Ordering_cache::Key key;
-  const bool keyed = cache && Ordering_cache::key_of(C, key);
-  if(!(keyed && cache->find(key, p))) {
-    Eigen::internal::minimum_degree_ordering(C, p);
-    if(keyed) cache->store(key, p);
-  }
+  cached_ordering(cache, C, p, [&](Ordering_cache::Permutation& q) { Eigen::internal::minimum_degree_ordering(C, q); });
   std::vector<int> order(n);
   for(std::size_t k = 0; k < n; ++k) order[k] = p.size() > 0 ? p.indices()[static_cast<Eigen::Index>(k)] : int(k);
   return order;

@@ -67,8 +67,8 @@ public:
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
-  // `orderings`: the ordering cache of its factorisations, shared with
-  // other evaluators of the same charts (nullptr: one of its own)
+  // `orderings`: the cache of the orderings of the charts' graphs, shared
+  // with other evaluators of the same charts (nullptr: one of its own)
   Chart_evaluator(const TriangleMesh& tm, const FIM& fim, const VIM& vim,
                   const std::vector<std::array<double, 3>>& points, const Merge_thresholds& thresholds,
                   std::shared_ptr<Ordering_cache> orderings = nullptr)
@@ -522,7 +522,7 @@ private:
   mutable std::mutex m_scratch_mutex;
   mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
   Flattening_cache<Chart_report>* m_cache = nullptr;
-  // the orderings of the patterns factorised by its flattenings: a chart
+  // the AMD orderings of the graphs of the charts it flattened: a chart
   // flattened again (the final flattening of a chart its last merging trial
   // made, the fits of its seams) takes its ordering from there
   std::shared_ptr<Ordering_cache> m_orderings;
