@@ -23,6 +23,8 @@
 #include <CGAL_QD/smooth_chart_cuts.h>
 #include <CGAL_QD/smooth_segmentation_seams.h>
 #include <CGAL_QD/vsa_segmentation.h>
+#include <CGAL_QD/boundary_refinement.h>
+#include <CGAL_QD/internal/bucket_queue.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -37,7 +39,9 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
+#include <random>
 #include <limits>
 #include <map>
 #include <set>
@@ -487,6 +491,75 @@ BOOST_AUTO_TEST_CASE(min_cut_moves_a_zigzag_border_onto_the_crease)
     compact[f] = chart[f] == 3 ? 0 : (chart[f] == 5 ? 1 : 2);
   }
   expect_valid_charts(tm, compact, 3);
+}
+
+// The refinement tells whether a chart is still connected after its pair's
+// band was relabelled from the faces near the band where it can
+// (internal::connected_near_band()); it may say nothing where the chart is
+// connected, but never that a chart cut in two is connected.
+BOOST_AUTO_TEST_CASE(connectivity_near_the_band_never_joins_a_chart_cut_in_two)
+{
+  // a flat 40 x 40 grid; chart 0 a U (two arms i < 10 and i >= 30 joined by
+  // the rows j < 5), chart 1 the rest
+  const std::size_t n = 40;
+  const Surface_mesh tm = make<Surface_mesh>(grid(n, n, bump(0.)));
+  typedef Surface_mesh::Face_index F;
+  const auto fim = get(CGAL::face_index, tm);
+  std::vector<F> face_of(num_faces(tm));
+  for(F f : faces(tm)) face_of[get(fim, f)] = f;
+  auto cell = [&](std::size_t f) { return std::array<std::size_t, 2>{{(f / 2) % n, (f / 2) / n}}; };
+  std::vector<std::size_t> chart(num_faces(tm));
+  for(std::size_t f = 0; f < chart.size(); ++f) {
+    const auto c = cell(f);
+    chart[f] = c[0] < 10 || c[0] >= 30 || c[1] < 5 ? 0 : 1;
+  }
+  std::vector<char> mark(chart.size(), 0);
+  auto check = [&](const std::function<bool(std::size_t, std::size_t)>& in, std::size_t c) {
+    std::vector<std::size_t> band;
+    std::vector<char> is_in(chart.size(), 0);
+    std::size_t outside = 0;
+    for(std::size_t f = 0; f < chart.size(); ++f) {
+      if(in(cell(f)[0], cell(f)[1])) {
+        band.push_back(f);
+        is_in[f] = 1;
+      } else if(chart[f] == c) {
+        ++outside;
+      }
+    }
+    const bool near = QD::internal::connected_near_band(
+        tm, fim, face_of, band, [&](std::size_t f) { return is_in[f] != 0; }, chart, c, outside, mark);
+    BOOST_TEST(std::count(mark.begin(), mark.end(), 0) == std::ptrdiff_t(mark.size()));  // the scratch is left clean
+    return near;
+  };
+  std::vector<F> all(face_of);
+  auto connected = [&](std::size_t c) { return QD::internal::chart_is_connected(tm, fim, all, chart, c); };
+  // a band across the left arm: the arm's faces above and below it meet through it
+  const auto left_strip = [](std::size_t i, std::size_t j) { return i < 10 && j >= 20 && j < 25; };
+  BOOST_TEST(connected(0));
+  BOOST_TEST(check(left_strip, 0));
+  // a band across the whole grid: the two arms meet far below it, which the
+  // faces near the band do not show; chart 1 is cut in two
+  const auto across = [](std::size_t, std::size_t j) { return j >= 20 && j < 25; };
+  BOOST_TEST(!check(across, 0));
+  BOOST_TEST(connected(0));
+  for(std::size_t f = 0; f < chart.size(); ++f)
+    if(across(cell(f)[0], cell(f)[1]) && chart[f] == 1) chart[f] = 0;
+  BOOST_TEST(!connected(1));
+  BOOST_TEST(!check(across, 1));
+  for(std::size_t f = 0; f < chart.size(); ++f)
+    if(across(cell(f)[0], cell(f)[1]) && cell(f)[0] >= 10 && cell(f)[0] < 30) chart[f] = 1;
+  // the left strip given to chart 1: the top of the left arm is cut off
+  for(std::size_t f = 0; f < chart.size(); ++f)
+    if(left_strip(cell(f)[0], cell(f)[1])) chart[f] = 1;
+  BOOST_TEST(!connected(0));
+  BOOST_TEST(!check(left_strip, 0));
+  // a chart wholly inside the band: nothing outside to reach
+  for(std::size_t f = 0; f < chart.size(); ++f)
+    chart[f] = cell(f)[0] >= 12 && cell(f)[0] < 16 && cell(f)[1] >= 12 && cell(f)[1] < 16 ? 2 : chart[f];
+  const auto square = [](std::size_t i, std::size_t j) { return i >= 11 && i < 17 && j >= 11 && j < 17; };
+  BOOST_TEST(check(square, 2));
+  // and no face of the chart anywhere
+  BOOST_TEST(!check(square, 7));
 }
 
 BOOST_AUTO_TEST_CASE(denoising_pulls_noisy_crease_vertices_onto_the_crease)
@@ -1167,6 +1240,79 @@ BOOST_AUTO_TEST_CASE(vsa_iteration_takes_the_decisions_of_cgal_vsa)
   ours.bootstrap();
   BOOST_TEST(ours.number_of_proxies() == 2u);
   compare_with_cgal_vsa(two, geo, "two fandisks", 1);
+}
+
+// The flood without copies takes its entries from a queue of buckets
+// (internal/bucket_queue.h): it must give them in the order of a binary heap
+// wherever the keys differ, say where two are the same, and hold keys beyond
+// its range (zero, below and above the largest key it was told of).
+BOOST_AUTO_TEST_CASE(bucket_queue_gives_the_order_of_a_binary_heap)
+{
+  struct Entry
+  {
+    double key;
+    std::uint32_t id;
+    bool operator<(const Entry& o) const { return key > o.key; }  // a min-heap
+  };
+  struct Key_of
+  {
+    double operator()(const Entry& e) const { return e.key; }
+  };
+  QD::internal::Bucket_queue<Entry, Key_of> queue;
+  queue.set_largest_key(4.);
+  std::vector<Entry> heap;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> exponent(-60., 3.), unit(0., 1.);
+  std::uint32_t id = 0;
+  std::size_t taken = 0;
+  // pushes and pops interleaved, the keys spread over 63 octaves (some
+  // below the queue's range, a few above the largest key), and zero once
+  for(int round = 0; round < 2; ++round) {
+    queue.clear();
+    heap.clear();
+    for(int step = 0; step < 20000; ++step) {
+      if(heap.empty() || unit(rng) < 0.55) {
+        const Entry e{step == 10 ? 0. : std::pow(2., exponent(rng)) * (1 + unit(rng)), id++};
+        queue.push(e);
+        heap.push_back(e);
+        std::push_heap(heap.begin(), heap.end());
+      } else {
+        BOOST_REQUIRE(!queue.empty());
+        BOOST_REQUIRE_EQUAL(queue.front().id, heap.front().id);
+        BOOST_REQUIRE_EQUAL(queue.front().key, heap.front().key);
+        queue.pop();
+        std::pop_heap(heap.begin(), heap.end());
+        heap.pop_back();
+        ++taken;
+      }
+      BOOST_REQUIRE_EQUAL(queue.size(), heap.size());
+    }
+    // the first round is left half full: clear() empties it
+  }
+  while(!heap.empty()) {
+    BOOST_REQUIRE_EQUAL(queue.front().id, heap.front().id);
+    queue.pop();
+    std::pop_heap(heap.begin(), heap.end());
+    heap.pop_back();
+    ++taken;
+  }
+  BOOST_TEST(queue.empty());
+  BOOST_TEST(taken > 15000u);
+  // equal keys: after one is taken, the front has the same key (which the
+  // flood reads as a tie); then a smaller key comes first
+  for(std::uint32_t i = 0; i < 3; ++i) queue.push(Entry{0.25, i});
+  queue.push(Entry{0.5, 3});
+  queue.pop();
+  BOOST_TEST(queue.front().key == 0.25);
+  queue.push(Entry{0.125, 4});
+  BOOST_TEST(queue.front().id == 4u);
+  queue.pop();
+  queue.pop();
+  BOOST_TEST(queue.front().key == 0.25);
+  queue.pop();
+  BOOST_TEST(queue.front().id == 3u);
+  queue.pop();
+  BOOST_TEST(queue.empty());
 }
 
 // On fine meshes step 1 averages the face normals over discs gathered from

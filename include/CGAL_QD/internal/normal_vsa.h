@@ -18,6 +18,7 @@
 // and the halfedge walks of every flooding, which made step 1 a fifth of the
 // segmentation of a 75K-face mesh.
 
+#include <CGAL_QD/internal/bucket_queue.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/parallel.h>
 
@@ -88,6 +89,9 @@ public:
     }
     m_order.reserve(order.size());
     for(std::size_t f : order) m_order.push_back(id[f]);
+    double largest_area = 0;
+    for(const std::array<double, 4>& g : m_geo) largest_area = (std::max)(largest_area, g[3]);
+    m_buckets.set_largest_key(4 * largest_area);  // two unit normals are at most 2 apart
   }
 
   // one proxy per connected component, fitted to all its faces
@@ -245,6 +249,10 @@ private:
     std::uint32_t face, proxy;
     bool operator<(const Face_to_integrate& other) const { return error > other.error; }
   };
+  struct Error_of
+  {
+    double operator()(const Face_to_integrate& e) const { return e.error; }
+  };
   struct Proxy_error
   {
     std::size_t proxy;
@@ -315,7 +323,13 @@ private:
   // first runs without the copies, and as soon as the entry next to be taken
   // has the error of the one just taken, it starts again with every copy and
   // keeps them for the floods that follow (meshes with planar parts have such
-  // ties; scanned surfaces, as a rule, none).
+  // ties; scanned surfaces, as a rule, none). Since the flood without the
+  // copies only ever takes an entry whose error no other entry has, any
+  // queue that gives the smallest error first gives its order: it runs
+  // through a queue of buckets (bucket_queue.h), which takes an entry in a
+  // few bit scans instead of a binary heap's dozen levels (`bunny00`'s 39
+  // floods: 3 million entries); the flood with every copy keeps the binary
+  // heap of CGAL's class, whose arrangement decides its ties.
   void partition()
   {
     if(!m_ties && partition_without_copies()) return;
@@ -323,17 +337,16 @@ private:
     partition_with_copies();
   }
 
-  // face g into the queue for proxy p
-  void queue(std::size_t g, std::size_t p)
+  // face g's entry for proxy p
+  Face_to_integrate entry(std::size_t g, std::size_t p) const
   {
-    m_queue.push_back(Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)});
-    std::push_heap(m_queue.begin(), m_queue.end());
+    return Face_to_integrate{error(g, m_proxies[p].normal), std::uint32_t(g), std::uint32_t(p)};
   }
 
   // the flood with every copy, as CGAL's class floods
   void partition_with_copies()
   {
-    flood([&](std::size_t g, std::size_t p) { queue(g, p); }, [](std::size_t) {},
+    flood(m_heap, [&](std::size_t g, std::size_t p) { m_heap.push(entry(g, p)); }, [](std::size_t) {},
           [](const Face_to_integrate&) { return true; });
   }
 
@@ -342,7 +355,7 @@ private:
   {
     const std::array<std::uint32_t, 3> nothing = {no_face, no_face, no_face};
     m_queued.assign(m_proxy_of.size(), nothing);
-    return flood([&](std::size_t g, std::size_t p) {
+    return flood(m_buckets, [&](std::size_t g, std::size_t p) {
       // the proxies it is queued with (at most one per neighbour)
       std::array<std::uint32_t, 3>& q = m_queued[g];
       int k = 0;
@@ -351,19 +364,18 @@ private:
         ++k;
       }
       if(k < 3) q[k] = std::uint32_t(p);
-      queue(g, p);
-    }, [&](std::size_t g) { prefetch(&m_queued[g]); }, [&](const Face_to_integrate& taken) { return m_queue.empty() || m_queue.front().error != taken.error; });
+      m_buckets.push(entry(g, p));
+    }, [&](std::size_t g) { prefetch(&m_queued[g]); }, [&](const Face_to_integrate& taken) { return m_buckets.empty() || m_buckets.front().error != taken.error; });
   }
 
-  // the flood with `push(face, proxy)`, which reads what `ahead(face)` asks
-  // for besides the face's chart and normal; it stops, returning false, where
-  // `go_on(entry just taken)` is false
-  template <class Push, class Ahead, class GoOn>
-  bool flood(const Push& push, const Ahead& ahead, const GoOn& go_on)
+  // the flood through `queue` with `push(face, proxy)`, which reads what
+  // `ahead(face)` asks for besides the face's chart and normal; it stops,
+  // returning false, where `go_on(entry just taken)` is false
+  template <class Queue, class Push, class Ahead, class GoOn>
+  bool flood(Queue& queue, const Push& push, const Ahead& ahead, const GoOn& go_on)
   {
     std::fill(m_proxy_of.begin(), m_proxy_of.end(), no_face);
-    // a binary heap, as std::priority_queue keeps it, whose storage is kept
-    m_queue.clear();
+    queue.clear();
     for(std::size_t p = 0; p < m_proxies.size(); ++p) {
       const std::size_t f = m_proxies[p].seed;
       m_proxy_of[f] = static_cast<std::uint32_t>(p);
@@ -378,8 +390,8 @@ private:
     // (the queue often gives one of them next) while the queue is reordered,
     // the next face's neighbours and chart a turn ahead. The order of
     // everything is the same.
-    while(!m_queue.empty()) {
-      const Face_to_integrate c = m_queue.front();
+    while(!queue.empty()) {
+      const Face_to_integrate c = queue.front();
       const bool taken = m_proxy_of[c.face] != no_face;
       const std::array<std::uint32_t, 3>& next = m_next_to[c.face];
       if(!taken)
@@ -390,12 +402,11 @@ private:
             prefetch(&m_geo[g]);
             prefetch(&m_next_to[g]);
           }
-      std::pop_heap(m_queue.begin(), m_queue.end());
-      m_queue.pop_back();
+      queue.pop();
       if(!go_on(c)) return false;
-      if(!m_queue.empty()) {
-        prefetch(&m_next_to[m_queue.front().face]);
-        prefetch(&m_proxy_of[m_queue.front().face]);
+      if(!queue.empty()) {
+        prefetch(&m_next_to[queue.front().face]);
+        prefetch(&m_proxy_of[queue.front().face]);
       }
       if(taken) continue;
       m_proxy_of[c.face] = c.proxy;
@@ -486,7 +497,8 @@ private:
   bool m_fitted = false;  // see `fitted_to_charts()`
   bool m_parallel = false;  // see `fit_in_parallel()`
   std::vector<Proxy> m_proxies;
-  std::vector<Face_to_integrate> m_queue;
+  Binary_heap<Face_to_integrate> m_heap;  // for the flood with every copy
+  Bucket_queue<Face_to_integrate, Error_of> m_buckets;  // for the flood without them
   std::vector<std::size_t> m_start, m_fill, m_faces;  // the faces of every proxy, by proxy
 };
 
