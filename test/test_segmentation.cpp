@@ -1863,6 +1863,34 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(staircase_border_is_cut_smooth_through_the_triangl
   BOOST_TEST(f.corner_uv.size() == 3 * num_faces(tm));
 }
 
+// With CGAL::Parallel_tag the smoothing computes phi, the charts' topology
+// and the move of every curve on several threads: the same mesh, charts and
+// counts as one thread, on elephant's charts of step 1 (many curves)
+BOOST_AUTO_TEST_CASE(parallel_border_smoothing_is_the_sequential_one)
+{
+  Surface_mesh one;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/elephant.off", one));
+  auto chart_one = one.add_property_map<Surface_mesh::Face_index, std::size_t>("f:chart", 0).first;
+  BOOST_REQUIRE(QD::segment_by_error_controlled_vsa(one, chart_one));
+  Surface_mesh two = one;
+  auto chart_two = two.property_map<Surface_mesh::Face_index, std::size_t>("f:chart").first;
+  const QD::Boundary_smoothing_result a = QD::smooth_chart_boundaries<CGAL::Sequential_tag>(one, chart_one);
+  const QD::Boundary_smoothing_result b = QD::smooth_chart_boundaries<CGAL::Parallel_tag>(two, chart_two);
+  BOOST_REQUIRE(a);
+  BOOST_REQUIRE(b);
+  BOOST_TEST(a.curves_smoothed > 10u);
+  BOOST_TEST(a.curves_smoothed == b.curves_smoothed);
+  BOOST_TEST(a.curves_failed == b.curves_failed);
+  BOOST_TEST(a.max_border_move == b.max_border_move);
+  BOOST_TEST(a.zigzag_after == b.zigzag_after);
+  BOOST_REQUIRE(num_vertices(one) == num_vertices(two));
+  BOOST_REQUIRE(num_faces(one) == num_faces(two));
+  std::size_t different = 0;
+  for(auto v : vertices(one)) different += one.point(v) == two.point(v) ? 0 : 1;
+  for(auto f : faces(one)) different += chart_one[f] == chart_two[f] ? 0 : 1;
+  BOOST_TEST(different == 0u);
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(constrained_and_smooth_borders_stay, Mesh, Mesh_types)
 {
   const std::size_t n = 12;

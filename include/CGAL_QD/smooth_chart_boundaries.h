@@ -11,12 +11,14 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/internal/chart_boundary_smoother.h>
+#include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/segmentation_measures.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -120,6 +122,10 @@ void record_changes(Boundary_smoothing_result& result, const Smoother& smoother)
 /// lengths; `Boundary_smoothing_result::max_relative_border_move` gives the
 /// largest move relative to the mean edge length of the curve.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`: the distances of each curve's band to its smoothed
+///         copy, the check of its two charts' topology and the move of the cut on several threads;
+///         the result is the same
 /// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph`
 /// \tparam FaceChartMap a model of `ReadWritePropertyMap` from faces to an integral chart id; it
 ///         must accept the new faces (e.g. a `Surface_mesh` property map or an associative map)
@@ -140,7 +146,7 @@ void record_changes(Boundary_smoothing_result& result, const Smoother& smoother)
 ///          `INVALID_COORDINATES` or `DEGENERATE_FACE` on invalid input, in which case nothing is
 ///          changed.
 /// \sa `seam_zigzag()`, `flatten_charts()` (the charts change shape: flatten them again)
-template <class TriangleMesh, class FaceChartMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FaceChartMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Boundary_smoothing_result smooth_chart_boundaries(TriangleMesh& tm, FaceChartMap face_chart,
                                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -170,6 +176,7 @@ Boundary_smoothing_result smooth_chart_boundaries(TriangleMesh& tm, FaceChartMap
                                             FaceChartMap, typename std::remove_const<decltype(ecm)>::type>
       Smoother;
   Smoother smoother(tm, vpm, face_chart, ecm, sharp, 3, rounds, true);
+  smoother.run_in_parallel(internal::number_of_workers<ConcurrencyTag>() > 1);
 
   // the curves, as vertex chains, before any change
   std::vector<std::pair<std::vector<vertex_descriptor>, bool>> curves;

@@ -10,11 +10,13 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/internal/chart_boundary_smoother.h>
+#include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/smooth_chart_boundaries.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -71,6 +73,10 @@ struct Constrained_or_cut_map
 /// triangle is degenerate; otherwise fewer smoothing rounds are tried, and if
 /// none fits, the cut is left as it was. The charts of the faces do not change.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`: the distances of each curve's band to its smoothed
+///         copy, the check of its two charts' topology and the move of the cut on several threads;
+///         the result is the same
 /// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph`
 /// \tparam FaceChartMap a model of `ReadWritePropertyMap` from faces to an integral chart id; it
 ///         must accept the new faces, which receive the chart of the face they come from
@@ -92,7 +98,7 @@ struct Constrained_or_cut_map
 ///          those of the cuts; `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES` or
 ///          `DEGENERATE_FACE` on invalid input, in which case nothing is changed.
 /// \sa `smooth_chart_boundaries()`, `seam_zigzag()`, `flatten_charts()`
-template <class TriangleMesh, class FaceChartMap, class CutMap,
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FaceChartMap, class CutMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Boundary_smoothing_result smooth_chart_cuts(TriangleMesh& tm, FaceChartMap face_chart, CutMap cuts,
                                             const NamedParameters& np = CGAL::parameters::default_values())
@@ -162,6 +168,7 @@ Boundary_smoothing_result smooth_chart_cuts(TriangleMesh& tm, FaceChartMap face_
       Smoother;
   const std::size_t rings = 3, region_rings = rings + 2;
   Smoother smoother(tm, vpm, face_chart, either, sharp, rings, rounds);
+  smoother.run_in_parallel(internal::number_of_workers<ConcurrencyTag>() > 1);
 
   typedef std::unordered_set<face_descriptor, boost::hash<face_descriptor>> Face_set;
   for(const auto& c : curves) {

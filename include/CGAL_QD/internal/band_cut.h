@@ -12,6 +12,7 @@
 // charts' topology compared before and after.
 
 #include <CGAL_QD/internal/labelled_triangles.h>
+#include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/internal/vec3.h>
 
 #include <algorithm>
@@ -65,6 +66,19 @@ public:
   std::vector<P> new_points;
   std::vector<std::pair<std::size_t, std::size_t>> split_edges;
   std::vector<Face_plan> plans;
+  // whether `verify()` and `move()` run their independent parts on the
+  // threads of CGAL::Parallel_tag (the same results)
+  bool parallel = false;
+
+  // `task(i)` for i in [0, n), on the threads of CGAL::Parallel_tag where `parallel`
+  template <class Task>
+  void for_each(std::size_t n, const Task& task) const
+  {
+    if(parallel)
+      for_each_index<CGAL::Parallel_tag>(n, task);
+    else
+      for_each_index<CGAL::Sequential_tag>(n, task);
+  }
 
   // Flips the sign of every component of positive (negative) band nodes,
   // connected through band edges, that reaches no locked node of side A (B):
@@ -233,10 +247,10 @@ public:
   bool verify(const std::array<Labelled_topology, 2>& before, const std::vector<std::size_t>& ends) const
   {
     const std::size_t total = nodes.size() + new_points.size();
-    for(int label = 0; label < 2; ++label) {
-      const Labelled_topology t = labelled_topology(after, label, total);
-      if(!(before[label] == t) || t.components != 1) return false;
-    }
+    std::array<Labelled_topology, 2> t;
+    for_each(2, [&](std::size_t label) { t[label] = labelled_topology(after, int(label), total); });
+    for(int label = 0; label < 2; ++label)
+      if(!(before[label] == t[label]) || t[label].components != 1) return false;
     std::vector<Tri> near_before, near_after;
     for(std::size_t x : ends) {
       near_before.clear();
@@ -265,17 +279,29 @@ public:
     std::vector<std::pair<P, P>> segments;
     for(const auto& m : mask)
       if(m.second == 3) segments.push_back({position(std::size_t(m.first >> 32)), position(std::size_t(m.first & 0xffffffffu))});
-    double move = 0;
-    for(const auto& s : segments)
-      for(const P& p : {s.first, s.second}) move = (std::max)(move, vec3::polyline_distance(p, original, closed));
-    for(const P& p : original) {
-      double best = -1, t;
-      for(const auto& s : segments) {
-        const double d = vec3::segment_distance(p, s.first, s.second, t);
-        if(best < 0 || d < best) best = d;
+    // the largest of the distances, block by block (a maximum is the same in any order)
+    const std::size_t block = 64, ns = (segments.size() + block - 1) / block, no = (original.size() + block - 1) / block;
+    std::vector<double> largest(ns + no, 0.);
+    for_each(ns + no, [&](std::size_t b) {
+      double move = 0;
+      if(b < ns) {
+        for(std::size_t k = b * block; k < (std::min)(segments.size(), (b + 1) * block); ++k)
+          for(const P& p : {segments[k].first, segments[k].second})
+            move = (std::max)(move, vec3::polyline_distance(p, original, closed));
+      } else {
+        for(std::size_t k = (b - ns) * block; k < (std::min)(original.size(), (b - ns + 1) * block); ++k) {
+          double best = -1, t;
+          for(const auto& s : segments) {
+            const double d = vec3::segment_distance(original[k], s.first, s.second, t);
+            if(best < 0 || d < best) best = d;
+          }
+          move = (std::max)(move, (std::max)(best, 0.));
+        }
       }
-      move = (std::max)(move, (std::max)(best, 0.));
-    }
+      largest[b] = move;
+    });
+    double move = 0;
+    for(double m : largest) move = (std::max)(move, m);
     return move;
   }
 
