@@ -8,6 +8,7 @@
 // triangles of a band around it; used by `smooth_chart_boundaries()`.
 
 #include <CGAL_QD/internal/band_cut.h>
+#include <CGAL_QD/internal/band_phi.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/labelled_triangles.h>
 #include <CGAL_QD/internal/vec3.h>
@@ -348,66 +349,12 @@ private:
     }
     // every node on its own, in blocks
     const std::size_t block = 256, blocks = (m_cut.nodes.size() + block - 1) / block;
+    const Smoothed_curve curve{m_target, normals, m_kept, m_closed, m_mean_edge};
     m_cut.for_each(blocks, [&](std::size_t b) {
       for(std::size_t x = b * block; x < (std::min)(m_cut.nodes.size(), (b + 1) * block); ++x)
-        phi_of_node(m_cut.nodes[x], normals);
+        band_node_phi(m_cut.nodes[x], curve);
     });
     return true;
-  }
-
-  // phi at node n, from the smoothed curve `m_target` and its vertex normals
-  void phi_of_node(Node& n, const std::vector<P>& normals) const
-  {
-    const std::size_t nv = m_curve.size(), ne = m_closed ? nv : nv - 1;
-    n.phi = n.raw = 0;
-    if(!n.in_band) {
-      n.phi = n.raw = n.side;
-      return;
-    }
-    if(n.fixed) return;
-    double best = -1, best_t = 0;
-    std::size_t best_i = 0;
-    for(std::size_t i = 0; i < ne; ++i) {
-      double t;
-      const double d = vec3::segment_distance(n.p, m_target[i], m_target[(i + 1) % nv], t);
-      if(best < 0 || d < best) {
-        best = d;
-        best_t = t;
-        best_i = i;
-      }
-    }
-    const std::size_t j = best_t <= 0 ? best_i : (best_t >= 1 ? (best_i + 1) % nv : nv);
-    double phi;
-    if(j < nv && !m_closed && (j == 0 || j + 1 == nv) && n.side != 0)
-      phi = n.side * best;  // beyond an end of the curve: the vertex keeps its side
-    else if(j < nv && (m_closed || (j > 0 && j + 1 < nv))) {
-      // nearest to a corner of the smoothed curve: the side of the bisector of its two frames
-      const std::size_t i0 = (j + nv - 1) % nv, i1 = (j + 1) % nv;
-      P s0 = vec3::cross(normals[j], vec3::sub(m_target[j], m_target[i0])), s1 = vec3::cross(normals[j], vec3::sub(m_target[i1], m_target[j]));
-      const double l0 = vec3::norm(s0), l1 = vec3::norm(s1);
-      P s = {0., 0., 0.};
-      for(int k = 0; k < 3; ++k) s[k] = (l0 > 0 ? s0[k] / l0 : 0.) + (l1 > 0 ? s1[k] / l1 : 0.);
-      const double ls = vec3::norm(s);
-      phi = ls > 0 ? vec3::dot(vec3::sub(n.p, m_target[j]), s) / ls : 0.;
-      if(std::abs(phi) < best) phi = phi < 0 ? -best : best;
-      if(n.side != 0 && (m_kept[i0] || m_kept[j % ne])) phi = n.side * best;
-    }
-    else {
-      const P& a = m_target[best_i];
-      const P& b = m_target[(best_i + 1) % nv];
-      const P d = vec3::sub(b, a);
-      P nm;
-      for(int k = 0; k < 3; ++k) nm[k] = (1 - best_t) * normals[best_i][k] + best_t * normals[(best_i + 1) % nv][k];
-      const P s = vec3::cross(nm, d);
-      const double ls = vec3::norm(s);
-      const P q = {a[0] + best_t * d[0], a[1] + best_t * d[1], a[2] + best_t * d[2]};
-      phi = ls > 0 ? vec3::dot(vec3::sub(n.p, q), s) / ls : 0.;
-      // beside a kept (sharp or constrained) edge, the faces keep their chart
-      if(m_kept[best_i] && n.side != 0) phi = n.side * best;
-    }
-    // a vertex next to the outside of the band keeps its side: the new curve stays in the band
-    if(n.locked && !(phi * n.side > 0)) phi = n.side * (std::max)(std::abs(phi), 1e-3 * m_mean_edge);
-    n.phi = n.raw = phi;
   }
 
   // the point of node x, as the kernel's

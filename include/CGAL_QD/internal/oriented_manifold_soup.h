@@ -27,18 +27,29 @@ bool is_oriented_manifold_soup(const PolygonRange& polygons, std::size_t number_
 {
   const std::size_t none = std::size_t(-1);
   // the corners, polygon by polygon: corner c is at vertex[c]; its polygon's
-  // corners are first[p] .. first[p + 1]
-  std::vector<std::size_t> first(1, 0), vertex, polygon_of, sorted;
-  first.reserve(polygons.size() + 1);
+  // corners are first[p] .. first[p + 1] (kept only where some polygon is
+  // not a triangle: with triangles alone, corner c's polygon is c / 3)
+  bool triangles = true;
+  for(const auto& polygon : polygons) triangles = triangles && polygon.size() == 3;
+  std::vector<std::size_t> first, vertex, polygon_of, sorted;
   vertex.reserve(3 * polygons.size());
-  polygon_of.reserve(3 * polygons.size());
+  if(!triangles) {
+    first.assign(1, 0);
+    first.reserve(polygons.size() + 1);
+    polygon_of.reserve(3 * polygons.size());
+  }
   for(const auto& polygon : polygons) {
     const std::size_t n = polygon.size();
     if(n < 3) return false;
     for(const auto id : polygon) {
       if(static_cast<std::size_t>(id) >= number_of_points) return false;
       vertex.push_back(static_cast<std::size_t>(id));
-      polygon_of.push_back(first.size() - 1);
+      if(!triangles) polygon_of.push_back(first.size() - 1);
+    }
+    if(triangles) {
+      const std::size_t* t = vertex.data() + vertex.size() - 3;
+      if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return false;  // a vertex twice
+      continue;
     }
     first.push_back(vertex.size());
     sorted.assign(vertex.end() - static_cast<std::ptrdiff_t>(n), vertex.end());
@@ -46,8 +57,14 @@ bool is_oriented_manifold_soup(const PolygonRange& polygons, std::size_t number_
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;  // a vertex twice
   }
   const std::size_t nc = vertex.size();
-  auto next = [&](std::size_t c) { return c + 1 == first[polygon_of[c] + 1] ? first[polygon_of[c]] : c + 1; };
-  auto prev = [&](std::size_t c) { return c == first[polygon_of[c]] ? first[polygon_of[c] + 1] - 1 : c - 1; };
+  auto next = [&](std::size_t c) {
+    if(triangles) return c % 3 == 2 ? c - 2 : c + 1;
+    return c + 1 == first[polygon_of[c] + 1] ? first[polygon_of[c]] : c + 1;
+  };
+  auto prev = [&](std::size_t c) {
+    if(triangles) return c % 3 == 0 ? c + 2 : c - 1;
+    return c == first[polygon_of[c]] ? first[polygon_of[c] + 1] - 1 : c - 1;
+  };
   // the oriented edges (from the corner's vertex to the next corner's),
   // grouped by the vertex they leave (a counting sort) and, within a group of
   // a few, sorted by the vertex they reach
