@@ -343,11 +343,29 @@ Refinement_result refine_chart_boundaries(const TriangleMesh& tm, FaceChartMap f
 
   // which charts are connected: the pairs keep them so, and where one was
   // before a pair, whether it still is can mostly be told near the band
-  std::vector<char> connected(n);
-  for(std::size_t c = 0; c < n; ++c) connected[c] = internal::chart_is_connected(tm, fim, members[c], chart, c);
+  // (one search per chart from its first face, over one array of marks)
+  std::vector<char> connected(n, 0), mark(nf, 0);
+  {
+    std::vector<face_descriptor> queue;
+    for(std::size_t c = 0; c < n; ++c) {
+      if(members[c].empty()) continue;
+      queue.assign(1, members[c].front());
+      mark[get(fim, queue.front())] = 1;
+      for(std::size_t q = 0; q < queue.size(); ++q)
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
+          const halfedge_descriptor o = opposite(h, tm);
+          if(is_border(o, tm)) continue;
+          const std::size_t g = get(fim, face(o, tm));
+          if(chart[g] != c || mark[g]) continue;
+          mark[g] = 1;
+          queue.push_back(face(o, tm));
+        }
+      connected[c] = queue.size() == members[c].size();
+    }
+    std::fill(mark.begin(), mark.end(), 0);
+  }
   std::vector<double> dist(nf, std::numeric_limits<double>::infinity());
   std::vector<long> node(nf, -1);
-  std::vector<char> mark(nf, 0);
   for(const auto& pair : pairs) {
     const std::size_t A = pair.first.first, B = pair.first.second;
     // the seeds may be stale after the previous pairs; keep the faces still on the border
