@@ -155,9 +155,10 @@ void give_islands_away(const TriangleMesh& tm, const FIM& fim,
 // and the caller looks at the whole chart. With the rim alone, 1,878 of the
 // 3,491 changed pairs of the 138 meshes of libcgal-demo needed the whole
 // chart (the rim breaks where the band ends: its pieces meet one or two faces
-// further out); with 3 layers, 290. `in_band(i)`: whether face i is in the band; `outside`: how many
-// faces of `c` lie outside the band (with none, there is no rim to reach);
-// `mark`: a scratch array of the mesh's face count, all 0, and left so.
+// further out); with 3 layers, 290. `in_band(i)`: whether face i is in the
+// band; `outside`: how many faces of `c` lie outside the band (with none,
+// there is no rim to reach); `mark`: a scratch array of the mesh's face
+// count, all 0, and left so.
 template <class TriangleMesh, class FIM, class InBand>
 bool connected_near_band(const TriangleMesh& tm, const FIM& fim,
                          const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_of,
@@ -343,27 +344,9 @@ Refinement_result refine_chart_boundaries(const TriangleMesh& tm, FaceChartMap f
 
   // which charts are connected: the pairs keep them so, and where one was
   // before a pair, whether it still is can mostly be told near the band
-  // (one search per chart from its first face, over one array of marks)
+  // (one search per chart, over one array of marks)
   std::vector<char> connected(n, 0), mark(nf, 0);
-  {
-    std::vector<face_descriptor> queue;
-    for(std::size_t c = 0; c < n; ++c) {
-      if(members[c].empty()) continue;
-      queue.assign(1, members[c].front());
-      mark[get(fim, queue.front())] = 1;
-      for(std::size_t q = 0; q < queue.size(); ++q)
-        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
-          const halfedge_descriptor o = opposite(h, tm);
-          if(is_border(o, tm)) continue;
-          const std::size_t g = get(fim, face(o, tm));
-          if(chart[g] != c || mark[g]) continue;
-          mark[g] = 1;
-          queue.push_back(face(o, tm));
-        }
-      connected[c] = queue.size() == members[c].size();
-    }
-    std::fill(mark.begin(), mark.end(), 0);
-  }
+  for(std::size_t c = 0; c < n; ++c) connected[c] = internal::chart_is_connected(tm, fim, members[c], chart, c, &mark);
   std::vector<double> dist(nf, std::numeric_limits<double>::infinity());
   std::vector<long> node(nf, -1);
   for(const auto& pair : pairs) {

@@ -11,8 +11,8 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/internal/chart_boundary_smoother.h>
-#include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/parallel.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/segmentation_measures.h>
 
@@ -146,7 +146,8 @@ void record_changes(Boundary_smoothing_result& result, const Smoother& smoother)
 ///          `INVALID_COORDINATES` or `DEGENERATE_FACE` on invalid input, in which case nothing is
 ///          changed.
 /// \sa `seam_zigzag()`, `flatten_charts()` (the charts change shape: flatten them again)
-template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FaceChartMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FaceChartMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
 Boundary_smoothing_result smooth_chart_boundaries(TriangleMesh& tm, FaceChartMap face_chart,
                                                   const NamedParameters& np = CGAL::parameters::default_values())
 {

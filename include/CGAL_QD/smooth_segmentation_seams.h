@@ -330,8 +330,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
         borders = borders || smooth;
       }
       if(borders) {
-        add(smooth_chart_boundaries<ConcurrencyTag>(mesh, chart,
-                                    CGAL::parameters::edge_is_constrained_map(keep).number_of_iterations(strengths[l])));
+        add(smooth_chart_boundaries<ConcurrencyTag>(
+            mesh, chart, CGAL::parameters::edge_is_constrained_map(keep).number_of_iterations(strengths[l])));
         // the halves of a cut edge that the smoothing split stay cuts
         for(edge_descriptor e : edges(mesh)) {
           const halfedge_descriptor h = halfedge(e, mesh);
@@ -349,8 +349,8 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
         cuts = cuts || now;
       }
       if(cuts) {
-        add(smooth_chart_cuts<ConcurrencyTag>(mesh, chart, cut_now,
-                              CGAL::parameters::edge_is_constrained_map(cut).number_of_iterations(strengths[l])));
+        add(smooth_chart_cuts<ConcurrencyTag>(
+            mesh, chart, cut_now, CGAL::parameters::edge_is_constrained_map(cut).number_of_iterations(strengths[l])));
         for(edge_descriptor e : edges(mesh))
           if(get(cut_now, e)) put(cut, e, true);
       }

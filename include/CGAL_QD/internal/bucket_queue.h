@@ -222,7 +222,6 @@ struct Binary_heap
 {
   std::vector<Entry> heap;
   bool empty() const { return heap.empty(); }
-  std::size_t size() const { return heap.size(); }
   const Entry& front() const { return heap.front(); }
   void push(const Entry& e)
   {

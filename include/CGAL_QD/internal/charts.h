@@ -95,22 +95,29 @@ std::vector<Face_geometry> face_geometry(const TriangleMesh& tm, const VPM& vpm,
 }
 
 // Whether the faces of chart `k` (given by `members`) are connected through
-// edges, looking only at faces whose `label` is k.
+// edges, looking only at faces whose `label` is k. `seen`, if given: a
+// scratch array of the mesh's face count, all 0, and left so (else one of its
+// own is made).
 template <class TriangleMesh, class FIM>
 bool chart_is_connected(const TriangleMesh& tm, const FIM& fim,
                         const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& members,
-                        const std::vector<std::size_t>& label, std::size_t k)
+                        const std::vector<std::size_t>& label, std::size_t k, std::vector<char>* seen = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<char> own;
+  if(!seen) {
+    own.assign(label.size(), 0);
+    seen = &own;
+  }
+  std::vector<char>& mark = *seen;
   std::vector<typename GT::face_descriptor> queue;
-  std::vector<char> seen(label.size(), 0);
   std::size_t count = 0, total = 0;
   for(auto f : members)
     if(label[get(fim, f)] == k) {
       ++total;
       if(queue.empty()) {
         queue.push_back(f);
-        seen[get(fim, f)] = 1;
+        mark[get(fim, f)] = 1;
       }
     }
   for(std::size_t q = 0; q < queue.size(); ++q, ++count)
@@ -118,11 +125,13 @@ bool chart_is_connected(const TriangleMesh& tm, const FIM& fim,
       const auto o = opposite(h, tm);
       if(is_border(o, tm)) continue;
       const std::size_t g = get(fim, face(o, tm));
-      if(!seen[g] && label[g] == k) {
-        seen[g] = 1;
+      if(!mark[g] && label[g] == k) {
+        mark[g] = 1;
         queue.push_back(face(o, tm));
       }
     }
+  if(seen != &own)
+    for(auto f : queue) mark[get(fim, f)] = 0;
   return total > 0 && count == total;
 }
 
