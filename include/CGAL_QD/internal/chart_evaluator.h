@@ -10,19 +10,17 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/chart_criterion.h>
-#include <CGAL_QD/distortion.h>
 #include <CGAL_QD/extract_chart.h>
 #include <CGAL_QD/flatten_patch.h>
 #include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/parameters.h>
-#include <CGAL_QD/internal/add_triangles.h>
 #include <CGAL_QD/internal/amd_order_of_triangles.h>
+#include <CGAL_QD/internal/chart_mesh.h>
 #include <CGAL_QD/internal/charts.h>
+#include <CGAL_QD/internal/fit_chart_to_lengths.h>
 #include <CGAL_QD/internal/flattening_cache.h>
 #include <CGAL_QD/internal/hopeless_trial.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
@@ -42,18 +40,6 @@
 namespace CGAL_QD {
 namespace internal {
 
-// The history of the Anderson acceleration of a pull of a chart's border
-// towards target lengths (`Arap_border::KEEP_LENGTHS`, see `evaluate()`).
-// Plain, two thirds of the pulls stop at their 30 iterations; accelerated,
-// they come closer to the targets within them. Measured on CGAL's seven
-// meshes of doc/segmentation_results.md: 545 instead of 543 of 551 seams
-// matched (`elephant` 79 of 79, its worst seam 0.0 % instead of 12.6 %
-// apart), one to two seam-smoothing tries fewer on `armadillo` and
-// `mannequin-devil` (10 and 15 % less time), the same pieces. A history of 5
-// left one `armadillo` seam unmatched; 2 gave `elephant` more zigzag (1.242
-// against 1.232).
-inline constexpr int seam_pull_anderson_window = 10;
-
 // Flattens a set of faces of `tm` cut open along the cut edges, by LPFB+IP,
 // and measures the result. Thread-safe: `evaluate` only reads shared data
 // (and takes a scratch buffer from a pool under a lock).
@@ -64,8 +50,8 @@ public:
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+  typedef Chart_kernel K;
+  typedef Chart_mesh Mesh;
 
   // `orderings`: the cache of the orderings of the charts' graphs, shared
   // with other evaluators of the same charts (nullptr: one of its own)
@@ -168,36 +154,8 @@ private:
     Chart_report rep;
     rep.number_of_faces = n_faces;
     Mesh sm;
-    sm.reserve(static_cast<typename Mesh::size_type>(wedges.size()),
-               static_cast<typename Mesh::size_type>(3 * n_faces),
-               static_cast<typename Mesh::size_type>(n_faces));
-    auto add_vertices = [&] {
-      for(std::size_t w = 0; w < wedges.size(); ++w) {
-        const std::array<double, 3>& p = m_points[get(m_vim, wedges.vertex_of_wedge[w])];
-        sm.add_vertex(K::Point_3(p[0], p[1], p[2]));
-      }
-    };
-    add_vertices();
-    if(!add_triangles(sm, wedges.wedge_of_corner)) {
-      // not a manifold surface: `add_face()` tells
-      sm.clear_without_removing_property_maps();
-      add_vertices();
-      for(std::size_t i = 0; i < n_faces; ++i) {
-        typedef typename Mesh::Vertex_index V;
-        const auto f = sm.add_face(V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i])),
-                                   V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 1])),
-                                   V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[3 * i + 2])));
-        if(f == Mesh::null_face()) {
-          rep.status = Error_code::NON_MANIFOLD;
-          return rep;
-        }
-      }
-    }
-    for(std::size_t i = 0; i < n_faces; ++i) {
-      rep.area += double_area3(m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i]])],
-                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 1]])],
-                               m_points[get(m_vim, wedges.vertex_of_wedge[wedges.wedge_of_corner[3 * i + 2]])]) / 2;
-    }
+    rep.status = build_chart_mesh(wedges, n_faces, m_vim, m_points, sm, rep.area);
+    if(rep.status != Error_code::OK) return rep;
     typedef typename Mesh::Vertex_index V;
     auto uv = sm.template add_property_map<V, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
     auto write_corner_uv = [&] {
@@ -214,64 +172,9 @@ private:
       for(std::size_t c = 0; c < 3 * n_faces; ++c)
         put(uv, V(static_cast<typename Mesh::size_type>(wedges.wedge_of_corner[c])),
             K::Point_2((*start_uv)[c][0], (*start_uv)[c][1]));
-      auto goal = sm.template add_property_map<typename Mesh::Edge_index, double>("e:goal", 0.).first;
-      for(std::size_t i = 0; i < n_faces; ++i)
-        for(auto h : CGAL::halfedges_around_face(halfedge(typename Mesh::Face_index(
-                                                     static_cast<typename Mesh::size_type>(i)), sm), sm)) {
-          int k = 0;
-          while(k < 2 && wedges.wedge_of_corner[3 * i + k] != std::size_t(target(h, sm))) ++k;
-          put(goal, edge(h, sm), (*border_target)[3 * i + k]);
-        }
-      for(auto h : halfedges(sm))  // the border loops, each counted at its smallest halfedge
-        if(is_border(h, sm)) {
-          auto g = next(h, sm);
-          while(g != h && h < g) g = next(g, sm);
-          if(g == h) ++rep.number_of_border_loops;
-        }
-      // the border pulled towards the targets with `weight`
-      auto pull = [&](double weight) {
-        const Optimization_result o = optimize_flattening(
-            sm, uv,
-            parameters::sparse_solver(
-                solver(),
-                parameters::arap_border(
-                    Arap_border::KEEP_LENGTHS,
-                    parameters::border_edge_length_map(
-                        goal, parameters::border_length_weight(
-                                  weight, parameters::area_preservation(
-                                              m_thresholds.area_preservation,
-                                              parameters::anderson_acceleration(seam_pull_anderson_window)))))));
-        if(o && measure(sm, uv, rep)) {
-          rep.optimized = true;
-          write_corner_uv();
-        } else {
-          rep.accepted = false;  // the caller keeps its earlier flattening
-        }
-        return rep;
-      };
-      if(!exact) return pull(pull_weight);
-      // first every border edge at exactly its target length (the border
-      // angles of the flattening kept as closely as the closure allows, the
-      // interior fitted again); where that leaves the thresholds, the border
-      // pulled towards the targets
-      auto exact = sm.template add_property_map<V, K::Point_2>("v:exact", K::Point_2(0, 0)).first;
-      for(auto v : vertices(sm)) put(exact, v, get(uv, v));
-      const Optimization_result e = optimize_flattening(
-          sm, exact,
-          parameters::sparse_solver(
-              solver(), parameters::arap_border(
-                            Arap_border::LENGTH_PRESERVED,
-                            parameters::number_of_free_iterations(
-                                0, parameters::border_edge_length_map(
-                                       goal, parameters::area_preservation(m_thresholds.area_preservation))))));
-      Chart_report exact_rep = rep;
-      if(e && e.lengths_preserved && measure(sm, exact, exact_rep) && exact_rep.accepted) {
-        exact_rep.optimized = exact_rep.lengths_matched = true;
-        for(auto v : vertices(sm)) put(uv, v, get(exact, v));
-        write_corner_uv();
-        return exact_rep;
-      }
-      return pull(pull_weight);
+      fit_chart_to_lengths(sm, uv, wedges.wedge_of_corner, *border_target, pull_weight, exact, m_thresholds, rep,
+                           write_corner_uv);
+      return rep;
     }
     if(stopped(stop)) return rep;
     // SimplicialLDLT, not the default's supernodal factorisation for large
@@ -292,7 +195,7 @@ private:
     // accepted and that one is not, or when both are and it has less local
     // area distortion; a trial that rejects both reports the optimised map,
     // the last it judged, and a final flattening that rejects both keeps the
-    // one nearer the thresholds (`nearer()`)
+    // one nearer the thresholds (`nearer_thresholds()`)
     auto better = [&](const auto& map, const Optimization_result& r) {
       Chart_report candidate = rep;
       if(!r || !measure(sm, map, candidate)) return false;
@@ -303,7 +206,7 @@ private:
           rep = candidate;
           return false;
         }
-        if(!nearer(candidate, rep)) return false;
+        if(!nearer_thresholds(candidate, rep, m_thresholds)) return false;
         rep = candidate;
         return true;
       }
@@ -367,58 +270,48 @@ private:
           optimize_flattening(sm, lpfb_ip, trial_parameters(0.).number_of_iterations(100));
       if(better(lpfb_ip, o)) uv = lpfb_ip;
     }
-    if(!paper && corner_uv && !rep.accepted) {
-      // a final flattening still outside the thresholds: the optimisation
-      // from LPFB+IP goes on where it stopped at its cap (at most 300
-      // iterations in all), and, for a chart with one border loop, one is
-      // started from LSCM (at most 300 iterations)
-      auto again = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:again", K::Point_2(0, 0)).first;
-      for(int start = 0; start < 2; ++start) {
-        std::size_t iterations = 300;
-        if(start == 0) {
-          if(!capped) continue;  // it converged: going on would give the same map
-          for(auto v : vertices(sm)) put(again, v, get(last, v));
-          iterations = 200;
-        } else {
-          typename Mesh::Halfedge_index border;
-          for(auto h : halfedges(sm))
-            if(is_border(h, sm)) {
-              border = h;
-              break;
-            }
-          if(rep.number_of_border_loops != 1 || border == Mesh::null_halfedge() ||
-             CGAL::Surface_mesh_parameterization::parameterize(
-                 sm, CGAL::Surface_mesh_parameterization::LSCM_parameterizer_3<Mesh>(), border, again) !=
-                 CGAL::Surface_mesh_parameterization::OK)
-            break;
-        }
-        if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(iterations))))
-          for(auto v : vertices(sm)) put(uv, v, get(again, v));  // a copy: `again` is used again
-      }
-    }
+    if(!paper && corner_uv && !rep.accepted)
+      go_on_from_the_cap_and_lscm(sm, uv, last, capped, rep.number_of_border_loops, better);
     write_corner_uv();
     return rep;
   }
 
-  static bool stopped(const std::atomic<bool>* stop) { return stop && stop->load(std::memory_order_relaxed); }
-
-  // of two flattenings beyond the thresholds, whether `a` is nearer them than
-  // `b`: without an overlap where `b` has one, else with the smaller largest
-  // ratio of A(Omega), L2 and A_loc to their bounds
-  bool nearer(const Chart_report& a, const Chart_report& b) const
+  // A final flattening still outside the thresholds: the optimisation
+  // from LPFB+IP goes on from `last` where it stopped at its cap (`capped`; at
+  // most 300 iterations in all), and, for a chart with one border loop
+  // (`border_loops`), one is started from LSCM (at most 300 iterations).
+  // `better(map, result)` tells whether a map is better than the chart's
+  // flattening (and takes its measures); `uv` then receives it.
+  template <class UVMap, class Better>
+  void go_on_from_the_cap_and_lscm(Mesh& sm, UVMap uv, UVMap last, bool capped, std::size_t border_loops,
+                                   const Better& better) const
   {
-    if(a.overlap != b.overlap) return !a.overlap;
-    auto excess = [&](const Chart_report& r) {
-      double e = 0;
-      if(m_thresholds.max_l2_stretch > 0) e = r.l2_stretch / m_thresholds.max_l2_stretch;
-      if(m_thresholds.max_area_distortion > 0)
-        e = (std::max)(e, r.area_distortion / (100. * m_thresholds.max_area_distortion));
-      if(m_thresholds.max_local_area_distortion > 0)
-        e = (std::max)(e, r.local_area_distortion / (100. * m_thresholds.max_local_area_distortion));
-      return e;
-    };
-    return excess(a) < excess(b);
+    auto again = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:again", K::Point_2(0, 0)).first;
+    for(int start = 0; start < 2; ++start) {
+      std::size_t iterations = 300;
+      if(start == 0) {
+        if(!capped) continue;  // it converged: going on would give the same map
+        for(auto v : vertices(sm)) put(again, v, get(last, v));
+        iterations = 200;
+      } else {
+        typename Mesh::Halfedge_index border;
+        for(auto h : halfedges(sm))
+          if(is_border(h, sm)) {
+            border = h;
+            break;
+          }
+        if(border_loops != 1 || border == Mesh::null_halfedge() ||
+           CGAL::Surface_mesh_parameterization::parameterize(
+               sm, CGAL::Surface_mesh_parameterization::LSCM_parameterizer_3<Mesh>(), border, again) !=
+               CGAL::Surface_mesh_parameterization::OK)
+          break;
+      }
+      if(better(again, optimize_flattening(sm, again, trial_parameters().number_of_iterations(iterations))))
+        for(auto v : vertices(sm)) put(uv, v, get(again, v));  // a copy: `again` is used again
+    }
   }
+
+  static bool stopped(const std::atomic<bool>* stop) { return stop && stop->load(std::memory_order_relaxed); }
 
   // a face-index buffer of the mesh's size, all -1, taken from the
   // evaluator's pool for one trial and given back (all -1 again) after it
@@ -486,30 +379,7 @@ private:
   template <class UVMap>
   bool measure(const Mesh& sm, const UVMap& uv, Chart_report& rep) const
   {
-    const Distortion_report<Mesh> d =
-        acceptance_measures(sm, uv, parameters::overlap_tolerance(m_thresholds.overlap_tolerance));
-    if(!d) {
-      rep.status = d.status;
-      rep.accepted = false;
-      return false;
-    }
-    rep.area_distortion = d.area_distortion;
-    rep.l2_stretch = d.l2_stretch;
-    rep.local_area_distortion = d.local_area_distortion;
-    rep.overlap = d.overlap;
-    rep.max_border_length_error = 0;
-    for(auto h : halfedges(sm))
-      if(is_border(h, sm)) {
-        const K::Point_3 &p = sm.point(source(h, sm)), &q = sm.point(target(h, sm));
-        const double l3 = std::sqrt(CGAL::squared_distance(p, q));
-        const double l2 = std::sqrt(CGAL::squared_distance(get(uv, source(h, sm)), get(uv, target(h, sm))));
-        rep.max_border_length_error = (std::max)(rep.max_border_length_error, std::abs(l2 - l3) / l3);
-      }
-    rep.accepted = rep.area_distortion <= 100. * m_thresholds.max_area_distortion &&
-                   rep.l2_stretch <= m_thresholds.max_l2_stretch && !rep.overlap &&
-                   (m_thresholds.criterion == Chart_criterion::LPFB_IP ||
-                    rep.local_area_distortion <= 100. * m_thresholds.max_local_area_distortion);
-    return true;
+    return measure_chart_flattening(sm, uv, m_thresholds, rep);
   }
 
   const TriangleMesh& m_tm;
