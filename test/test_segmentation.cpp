@@ -2708,3 +2708,98 @@ BOOST_AUTO_TEST_CASE(add_triangles_refuses_what_is_not_a_manifold_surface)
     BOOST_TEST(!QD::internal::add_triangles(sm, c.second), c.first);
   }
 }
+
+// ============================================ a chart cut open, and its measures
+// internal/chart_mesh.h builds the mesh of a chart cut open from its wedges
+// and judges a flattening of it against the thresholds, as every trial, fit
+// and final flattening of the segmentation does.
+
+#include <CGAL_QD/internal/chart_mesh.h>
+
+BOOST_AUTO_TEST_CASE(chart_mesh_is_built_and_measured_against_the_thresholds)
+{
+  using namespace qd_test;
+  namespace tt = boost::test_tools;
+  typedef QD::internal::Chart_mesh Chart_mesh;
+  typedef Chart_mesh::Vertex_index V;
+  // a flat 1 x 0.75 rectangle of 8 x 6 cells
+  Surface_mesh src;
+  BOOST_REQUIRE(build(grid(8, 6, [](double x, double y) { return P3{{x, 0.75 * y, 0.}}; }), src));
+  std::vector<std::array<double, 3>> points;
+  QD::internal::Wedges<Surface_mesh> wedges;  // one wedge per vertex: nothing is cut
+  for(auto v : src.vertices()) {
+    points.push_back({src.point(v).x(), src.point(v).y(), src.point(v).z()});
+    wedges.vertex_of_wedge.push_back(v);
+  }
+  for(auto f : src.faces())
+    for(auto v : CGAL::vertices_around_face(src.halfedge(f), src)) wedges.wedge_of_corner.push_back(v.idx());
+  const std::size_t nf = src.number_of_faces();
+  Chart_mesh sm;
+  double area = -1;
+  BOOST_REQUIRE(QD::internal::build_chart_mesh(wedges, nf, get(CGAL::vertex_index, src), points, sm, area) ==
+                QD::Error_code::OK);
+  BOOST_TEST(sm.number_of_faces() == nf);
+  BOOST_TEST(sm.number_of_vertices() == src.number_of_vertices());
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(sm));
+  BOOST_TEST(area == 0.75, tt::tolerance(1e-12));
+  BOOST_TEST(QD::internal::number_of_border_loops(sm) == 1u);
+
+  // the rectangle as it is: accepted, with no distortion
+  auto uv = sm.add_property_map<V, Epick::Point_2>("v:uv", Epick::Point_2(0, 0)).first;
+  for(V v : sm.vertices()) put(uv, v, Epick::Point_2(sm.point(v).x(), sm.point(v).y()));
+  const QD::internal::Merge_thresholds defaults;
+  QD::Chart_report rep;
+  BOOST_REQUIRE(QD::internal::measure_chart_flattening(sm, uv, defaults, rep));
+  BOOST_TEST(rep.accepted);
+  BOOST_TEST(rep.area_distortion < 1e-9);
+  BOOST_TEST(rep.l2_stretch == 1.0, tt::tolerance(1e-9));
+  BOOST_TEST(rep.local_area_distortion < 1e-9);
+  BOOST_TEST(!rep.overlap);
+  BOOST_TEST(rep.max_border_length_error < 1e-12);
+
+  // the same rectangle with its columns moved along x: the same total area
+  // (A(Omega) 0), but each triangle's area changed by up to 31 %, so A_loc is
+  // far beyond 2.5 %; the paper's criterion, which does not look at A_loc,
+  // accepts it
+  for(V v : sm.vertices()) {
+    const double x = sm.point(v).x();
+    put(uv, v, Epick::Point_2(x + 0.05 * std::sin(2 * CGAL_PI * x), sm.point(v).y()));
+  }
+  BOOST_REQUIRE(QD::internal::measure_chart_flattening(sm, uv, defaults, rep));
+  BOOST_TEST(rep.area_distortion < 1e-9);
+  BOOST_TEST(rep.local_area_distortion > 10.);
+  BOOST_TEST(rep.l2_stretch < 2.);
+  BOOST_TEST(!rep.overlap);
+  BOOST_TEST(!rep.accepted);
+  BOOST_TEST(rep.max_border_length_error > 0.1);  // the border edges along x changed length
+  QD::internal::Merge_thresholds paper = defaults;
+  paper.criterion = QD::Chart_criterion::LPFB_IP;
+  BOOST_REQUIRE(QD::internal::measure_chart_flattening(sm, uv, paper, rep));
+  BOOST_TEST(rep.accepted);
+
+  // twice the size: A(Omega) 300 %
+  for(V v : sm.vertices()) put(uv, v, Epick::Point_2(2 * sm.point(v).x(), 2 * sm.point(v).y()));
+  BOOST_REQUIRE(QD::internal::measure_chart_flattening(sm, uv, paper, rep));
+  BOOST_TEST(rep.area_distortion == 300., tt::tolerance(1e-9));
+  BOOST_TEST(!rep.accepted);
+
+  // wedges that make no manifold surface: an edge used twice in one direction
+  QD::internal::Wedges<Surface_mesh> bad;
+  bad.vertex_of_wedge.assign(wedges.vertex_of_wedge.begin(), wedges.vertex_of_wedge.begin() + 4);
+  bad.wedge_of_corner = {0, 1, 2, 0, 1, 3};
+  Chart_mesh broken;
+  double unset = -1;
+  BOOST_TEST(QD::internal::build_chart_mesh(bad, 2, get(CGAL::vertex_index, src), points, broken, unset) ==
+             QD::Error_code::NON_MANIFOLD);
+
+  // which of two rejected flattenings is nearer the thresholds: one without
+  // an overlap before one with; then the smaller largest ratio to a bound
+  QD::Chart_report crossing, stretched, spread;
+  crossing.overlap = true;
+  stretched.l2_stretch = 3.;          // 1.5 times its bound
+  spread.local_area_distortion = 3.;  // 1.2 times its bound
+  BOOST_TEST(QD::internal::nearer_thresholds(stretched, crossing, defaults));
+  BOOST_TEST(!QD::internal::nearer_thresholds(crossing, stretched, defaults));
+  BOOST_TEST(QD::internal::nearer_thresholds(spread, stretched, defaults));
+  BOOST_TEST(!QD::internal::nearer_thresholds(stretched, spread, defaults));
+}
