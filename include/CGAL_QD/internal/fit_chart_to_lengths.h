@@ -22,7 +22,7 @@ namespace CGAL_QD {
 namespace internal {
 
 // The history of the Anderson acceleration of a pull of a chart's border
-// towards target lengths (`Arap_border::KEEP_LENGTHS`, see `evaluate()`).
+// towards target lengths (`Arap_border::KEEP_LENGTHS`, below).
 // Plain, two thirds of the pulls stop at their 30 iterations; accelerated,
 // they come closer to the targets within them. Measured on CGAL's seven
 // meshes of doc/segmentation_results.md: 545 instead of 543 of 551 seams
@@ -44,6 +44,8 @@ inline constexpr int seam_pull_anderson_window = 10;
 // area) receives the measures of the map left in `uv`, or `accepted` false
 // where no map could be made or measured (the caller keeps its earlier
 // flattening); `write_uv()` is called whenever `uv` holds a map to give.
+// The vertices of `sm` must come in a fill-reducing order: the systems are
+// factorised in the order of their rows (`Simplicial_LDLT_natural_solver`).
 template <class UVMap, class WriteUV>
 void fit_chart_to_lengths(Chart_mesh& sm, UVMap uv, const std::vector<std::size_t>& wedge_of_corner,
                           const std::vector<double>& border_target, double pull_weight, bool exact,
