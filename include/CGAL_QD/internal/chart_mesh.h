@@ -14,7 +14,6 @@
 #include <CGAL_QD/extract_chart.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/add_triangles.h>
-#include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,8 +39,8 @@ template <class TriangleMesh, class VIM>
 Error_code build_chart_mesh(const Wedges<TriangleMesh>& wedges, std::size_t n_faces, const VIM& vim,
                             const std::vector<std::array<double, 3>>& points, Chart_mesh& sm, double& area)
 {
-  typedef typename Chart_mesh::Vertex_index V;
-  typedef typename Chart_mesh::size_type S;
+  typedef Chart_mesh::Vertex_index V;
+  typedef Chart_mesh::size_type S;
   sm.reserve(static_cast<S>(wedges.size()), static_cast<S>(3 * n_faces), static_cast<S>(n_faces));
   auto add_vertices = [&] {
     for(std::size_t w = 0; w < wedges.size(); ++w) {

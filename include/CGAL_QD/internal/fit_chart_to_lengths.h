@@ -51,12 +51,12 @@ void fit_chart_to_lengths(Chart_mesh& sm, UVMap uv, const std::vector<std::size_
                           const std::vector<double>& border_target, double pull_weight, bool exact,
                           const Merge_thresholds& thresholds, Chart_report& rep, const WriteUV& write_uv)
 {
-  typedef typename Chart_mesh::Vertex_index V;
-  typedef typename Chart_mesh::size_type S;
+  typedef Chart_mesh::Vertex_index V;
+  typedef Chart_mesh::size_type S;
   const std::size_t n_faces = wedge_of_corner.size() / 3;
-  auto goal = sm.template add_property_map<typename Chart_mesh::Edge_index, double>("e:goal", 0.).first;
+  auto goal = sm.template add_property_map<Chart_mesh::Edge_index, double>("e:goal", 0.).first;
   for(std::size_t i = 0; i < n_faces; ++i)
-    for(auto h : CGAL::halfedges_around_face(halfedge(typename Chart_mesh::Face_index(static_cast<S>(i)), sm), sm)) {
+    for(auto h : CGAL::halfedges_around_face(halfedge(Chart_mesh::Face_index(static_cast<S>(i)), sm), sm)) {
       int k = 0;
       while(k < 2 && wedge_of_corner[3 * i + k] != std::size_t(target(h, sm))) ++k;
       put(goal, edge(h, sm), border_target[3 * i + k]);
@@ -82,7 +82,12 @@ void fit_chart_to_lengths(Chart_mesh& sm, UVMap uv, const std::vector<std::size_
       rep.accepted = false;
     }
   };
-  if(!exact) return pull(pull_weight);
+  if(!exact) {
+    pull(pull_weight);
+    return;
+  }
+  // first every border edge at exactly its target length; where that leaves
+  // the thresholds, the border pulled towards the targets
   auto exact_uv = sm.template add_property_map<V, Chart_kernel::Point_2>("v:exact", Chart_kernel::Point_2(0, 0)).first;
   for(auto v : vertices(sm)) put(exact_uv, v, get(uv, v));
   const Optimization_result e = optimize_flattening(
