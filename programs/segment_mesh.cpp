@@ -8,8 +8,9 @@
 // it (CGAL_QD::segment_quasi_developable(): error-controlled VSA, minimum-cut
 // refinement, optional denoising, merging judged by LPFB+IP and ARAP), smooths
 // the seams through the triangles where every piece stays within the
-// thresholds (CGAL_QD::smooth_segmentation_seams()), and prints what every step
-// did, or one JSON object with --json. With --out-dir it writes charts.ply,
+// thresholds (CGAL_QD::smooth_segmentation_seams()), shortens the darts inside
+// the pieces where they allow it (CGAL_QD::shorten_chart_cuts()), and prints
+// what every step did, or one JSON object with --json. With --out-dir it writes charts.ply,
 // atlas.obj with atlas.mtl, patterns.svg and, when built with cairo,
 // patterns.pdf (every piece at a real size on pages), segmentation.svg,
 // viewer.html (when built with three.js: the mesh and its pieces to turn and
@@ -31,6 +32,7 @@
 #include <CGAL_QD/IO/viewer_html.h>
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/shorten_chart_cuts.h>
 #include <CGAL_QD/smooth_segmentation_seams.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -274,18 +276,19 @@ int main(int argc, char** argv)
   // only where it needs it (and for a single chart)
   segment_mesh::Smoothing<Mesh> smoothing;
   Mesh smoothed;
+  // the thresholds and criterion of the segmentation, for the smoothing and the shortening
+  const auto snp = QP::area_preservation(
+      o.area_preservation,
+      QP::arap_border(segment_mesh::arap_border(o),
+                      QP::max_local_area_distortion(
+                          o.max_local_area_distortion,
+                          QP::chart_criterion(segment_mesh::criterion(o),
+                                              QP::max_area_distortion(o.max_area_distortion,
+                                                                      QP::max_l2_stretch(o.max_stretch))))));
   if(r && o.smooth_seams) {
     smoothing.requested = r.number_of_charts > 1;
     smoothing.input_faces = r.number_of_faces;
     auto smoothed_chart = smoothed.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
-    const auto snp = QP::area_preservation(
-        o.area_preservation,
-        QP::arap_border(segment_mesh::arap_border(o),
-                        QP::max_local_area_distortion(
-                            o.max_local_area_distortion,
-                            QP::chart_criterion(segment_mesh::criterion(o),
-                                                QP::max_area_distortion(o.max_area_distortion,
-                                                                        QP::max_l2_stretch(o.max_stretch))))));
     CGAL_QD::Seam_smoothing_result<Mesh>& s = smoothing.result;
     s = o.sequential
             ? CGAL_QD::smooth_segmentation_seams<CGAL::Sequential_tag>(mesh, chart, r, smoothed, smoothed_chart, snp)
@@ -301,6 +304,18 @@ int main(int argc, char** argv)
     } else if(!r.flattened) {
       r.status = s.status;  // the charts could not be flattened
     }
+  }
+  // the cuts inside the charts closed where the charts allow it
+  // (CGAL_QD::shorten_chart_cuts()), on the mesh the smoothing left
+  if(r && o.shorten_cuts && segment_mesh::criterion(o) != CGAL_QD::Chart_criterion::LPFB_IP) {
+    const Mesh& m = smoothing.result.kept ? smoothed : mesh;
+    const auto m_chart = m.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
+    smoothing.shortening_requested = true;
+    CGAL_QD::Cut_shortening_result<Mesh>& c = smoothing.shortening;
+    c = o.sequential ? CGAL_QD::shorten_chart_cuts<CGAL::Sequential_tag>(m, m_chart, r, snp)
+                     : CGAL_QD::shorten_chart_cuts<CGAL::Parallel_if_available_tag>(m, m_chart, r, snp);
+    r.time_total_ms += c.time_ms;
+    if(c.kept) static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(c.flattening);
   }
   const Mesh& out_mesh = smoothing.result.kept ? smoothed : mesh;
   const auto out_chart = out_mesh.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
@@ -455,6 +470,22 @@ int main(int argc, char** argv)
                         ? std::string("no curve could be smoothed; seams follow the triangle edges")
                         : std::to_string(smoothing.result.rejected_charts) +
                               " charts beyond the thresholds once smoothed; seams follow the triangle edges")
+            << "\n"
+            << "  shorten cuts   "
+            << (!smoothing.shortening_requested ? std::string("off")
+                : smoothing.shortening.kept
+                    ? std::to_string(smoothing.shortening.cuts_shortened) + " of " +
+                          std::to_string(smoothing.shortening.cut_curves) + " cuts inside the pieces shortened (" +
+                          std::to_string(smoothing.shortening.cuts_closed) + " closed whole), length " +
+                          segment_mesh::text(smoothing.shortening.cut_length) + " -> " +
+                          segment_mesh::text(smoothing.shortening.cut_length - smoothing.shortening.cut_length_closed)
+                : smoothing.shortening.status != CGAL_QD::Error_code::OK
+                    ? std::string("not run: ") + CGAL_QD::error_message(smoothing.shortening.status)
+                : smoothing.shortening.cut_curves == 0 ? std::string("no cut inside a piece")
+                : smoothing.shortening.cuts_passing_trials == 0
+                    ? std::string("every cut needed as it is")
+                    : std::to_string(smoothing.shortening.cuts_passing_trials) +
+                          " cuts could be shortened, but not without a seam unmatched in length")
             << "\n"
             << "  total          " << r.time_total_ms << " ms\n"
             << written;

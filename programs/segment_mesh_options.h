@@ -46,7 +46,7 @@ struct Options
   std::string arap_border = "free";
   std::string merge_order = "smallest";
   double compactness_ratio = 0.6;
-  bool denoise = false, refine = true, merge = true, share_out = true, smooth_seams = true, sequential = false;
+  bool denoise = false, refine = true, merge = true, share_out = true, shorten_cuts = true, smooth_seams = true, sequential = false;
   // the output
   bool json = false, verbose = false, quiet = false;
 };
@@ -224,6 +224,10 @@ inline void add_options(CLI::App& app, Options& o)
   app.add_flag("!--no-share-out", o.share_out,
                "Keep the small charts that the merging leaves instead of sharing them out among their neighbours "
                "(never done with --criterion lpfb-ip)")
+      ->group(segmentation);
+  app.add_flag("!--no-shorten-cuts", o.shorten_cuts,
+               "Keep the cuts inside the pieces as the merging leaves them instead of closing them where the piece "
+               "still passes without them (never done with --criterion lpfb-ip)")
       ->group(segmentation);
   app.add_flag("!--no-smooth-seams", o.smooth_seams,
                "Keep the seams along the triangle edges instead of smoothing them through the triangles")

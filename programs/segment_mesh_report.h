@@ -11,6 +11,7 @@
 #include <CGAL_QD/IO/patterns_svg.h>
 #include <CGAL_QD/repair_mesh.h>
 #include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/shorten_chart_cuts.h>
 #include <CGAL_QD/smooth_segmentation_seams.h>
 
 #include <nlohmann/json.hpp>
@@ -40,13 +41,15 @@ inline Json number(double x)
   return std::strtod(text(x).c_str(), nullptr);
 }
 
-// what the seam smoothing did
+// what the seam smoothing and the cut shortening after it did
 template <class Mesh>
 struct Smoothing
 {
   bool requested = false;
   std::size_t input_faces = 0;  // the faces of the mesh before the smoothing refined it
   CGAL_QD::Seam_smoothing_result<Mesh> result;  // its flattening moved into the segmentation's when kept
+  bool shortening_requested = false;
+  CGAL_QD::Cut_shortening_result<Mesh> shortening;  // likewise
 };
 
 // how patterns.svg (and patterns.pdf) was drawn, for report.json
@@ -108,6 +111,18 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                            {"rejected_charts", s.rejected_charts},
                            {"tries", s.tries},
                            {"time_ms", number(s.time_ms)}};
+  }
+  if(smoothing.shortening_requested) {
+    const auto& c = smoothing.shortening;
+    j["cut_shortening"] = {{"kept", c.kept},
+                           {"cut_curves", c.cut_curves},
+                           {"cuts_passing_trials", c.cuts_passing_trials},
+                           {"cuts_shortened", c.cuts_shortened},
+                           {"cuts_closed", c.cuts_closed},
+                           {"cut_length", number(c.cut_length)},
+                           {"cut_length_closed", number(c.cut_length_closed)},
+                           {"trials", c.trials},
+                           {"time_ms", number(c.time_ms)}};
   }
   if(patterns.result) {
     const CGAL_QD::IO::Pattern_result& p = *patterns.result;

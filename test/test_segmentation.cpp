@@ -19,6 +19,7 @@
 #include <CGAL_QD/optimize_flattening.h>
 #include <CGAL_QD/segmentation_measures.h>
 #include <CGAL_QD/segment_quasi_developable.h>
+#include <CGAL_QD/shorten_chart_cuts.h>
 #include <CGAL_QD/smooth_chart_boundaries.h>
 #include <CGAL_QD/smooth_chart_cuts.h>
 #include <CGAL_QD/smooth_segmentation_seams.h>
@@ -2609,6 +2610,171 @@ BOOST_AUTO_TEST_CASE(seam_smoothing_flattens_an_unflattened_segmentation_it_does
   BOOST_TEST(num_faces(out2) == 0u);
 }
 #endif
+
+namespace {
+
+// a polar patch in one chart with a dart along the edges from its border
+// (ring `rings`, sector 0) to its centre; returns the dart's length
+double dart_to_the_centre(const Surface_mesh& tm, std::size_t rings, std::size_t sectors,
+                          std::map<Surface_mesh::Edge_index, bool>& cut)
+{
+  // polar(): vertex 0 is the centre, vertex 1 + (r - 1) * sectors + k the k-th of ring r
+  double length = 0;
+  for(auto e : edges(tm)) cut[e] = false;
+  for(std::size_t r = 0; r < rings; ++r) {
+    const Surface_mesh::Vertex_index a(r == 0 ? 0 : 1 + (r - 1) * sectors), b(1 + r * sectors);
+    const auto h = halfedge(a, b, tm);
+    BOOST_REQUIRE(h.second);
+    cut[edge(h.first, tm)] = true;
+    length += std::sqrt(CGAL::squared_distance(tm.point(a), tm.point(b)));
+  }
+  return length;
+}
+
+// the polar patch in one chart with that dart, flattened
+QD::Chart_flattening_result<Surface_mesh> one_chart_with_a_dart(const Surface_mesh& tm, std::size_t rings,
+                                                                std::size_t sectors, Face_map<Surface_mesh>& chart,
+                                                                double& dart)
+{
+  for(auto f : faces(tm)) chart[f] = 0;
+  std::map<Surface_mesh::Edge_index, bool> cut;
+  dart = dart_to_the_centre(tm, rings, sectors, cut);
+  const auto f = QD::flatten_charts(tm, boost::make_assoc_property_map(chart),
+                                    CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(cut)));
+  BOOST_REQUIRE(f);
+  return f;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(needless_cuts_are_closed_and_needed_ones_kept)
+{
+  const std::size_t rings = 8, sectors = 32;
+  // a flat disk needs no dart: closed whole, and the disk flattens exactly
+  {
+    const Surface_mesh tm = make<Surface_mesh>(polar(rings, sectors, flat_disk(1.)));
+    Face_map<Surface_mesh> chart;
+    double dart = 0;
+    const auto f = one_chart_with_a_dart(tm, rings, sectors, chart, dart);
+    BOOST_REQUIRE(f.seam_edges.size() == rings);
+    const auto s = QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f);
+    BOOST_REQUIRE(s);
+    BOOST_TEST(s.kept);
+    BOOST_TEST(s.cut_curves == 1u);
+    BOOST_TEST(s.cuts_passing_trials == 1u);
+    BOOST_TEST(s.cuts_shortened == 1u);
+    BOOST_TEST(s.cuts_closed == 1u);
+    BOOST_TEST(s.trials == 1u);  // closed whole at the first trial
+    BOOST_TEST(s.cut_length == dart, tt::tolerance(1e-12));
+    BOOST_TEST(s.cut_length_closed == dart, tt::tolerance(1e-12));
+    BOOST_TEST(s.flattening.seam_edges.empty());
+    BOOST_TEST(s.flattening.rejected_charts == 0u);
+    BOOST_TEST(s.flattening.max_area_distortion < 1e-6);
+    BOOST_TEST(s.flattening.compactness > f.compactness);
+  }
+  // a cone of half-angle 30 degrees: its apex has half its angle missing, so
+  // the dart must reach it; every trial, from the whole dart down to its last
+  // edge at the apex, is tried and fails
+  {
+    const double a = CGAL_PI / 6;
+    const Surface_mesh tm = make<Surface_mesh>(polar(rings, sectors, [=](double rho, double phi) {
+      return P3{rho * std::sin(a) * std::cos(phi), rho * std::sin(a) * std::sin(phi), -rho * std::cos(a)};
+    }));
+    Face_map<Surface_mesh> chart;
+    double dart = 0;
+    const auto f = one_chart_with_a_dart(tm, rings, sectors, chart, dart);
+    BOOST_REQUIRE(f.rejected_charts == 0u);  // the cone with its dart develops exactly
+    BOOST_TEST(f.max_area_distortion < 1e-6);
+    const auto s = QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f);
+    BOOST_REQUIRE(s);
+    BOOST_TEST(!s.kept);
+    BOOST_TEST(s.cut_curves == 1u);
+    BOOST_TEST(s.cuts_passing_trials == 0u);
+    BOOST_TEST(s.cuts_shortened == 0u);
+    BOOST_TEST(s.trials == 4u);  // 8 edges, 4, 2, 1
+    BOOST_TEST(s.cut_length == dart, tt::tolerance(1e-12));
+    BOOST_TEST(s.cut_length_closed == 0.);
+    BOOST_TEST(s.flattening.charts.empty());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(fandisk_darts_are_shortened_from_their_loose_ends)
+{
+  Surface_mesh tm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/fandisk.off", tm));
+  Face_map<Surface_mesh> chart;
+  const auto r = QD::segment_quasi_developable(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(r);
+  BOOST_REQUIRE(r.rejected_charts == 0u);
+  const auto s = QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), r);
+  BOOST_REQUIRE(s);
+  BOOST_TEST_MESSAGE("fandisk: " << s.cuts_shortened << " of " << s.cut_curves << " cuts shortened, "
+                                 << s.cut_length_closed << " of " << s.cut_length << " closed in " << s.trials
+                                 << " trials; seams " << r.seam_length << " -> " << s.flattening.seam_length
+                                 << ", compactness " << r.compactness << " -> " << s.flattening.compactness);
+  BOOST_TEST(s.kept);
+  BOOST_TEST(s.cut_curves >= 2u);
+  BOOST_TEST(s.cuts_shortened >= 1u);
+  // a tenth of the cuts at least: fandisk's pieces keep long darts that they do not need whole
+  BOOST_TEST(s.cut_length_closed > 0.1 * s.cut_length);
+  BOOST_TEST(s.cut_length_closed < s.cut_length);
+  const auto& f = s.flattening;
+  BOOST_TEST(f.number_of_charts == r.number_of_charts);
+  BOOST_TEST(f.rejected_charts == 0u);
+  BOOST_TEST(f.overlapping_charts == 0u);
+  BOOST_TEST(f.max_local_area_distortion <= 2.5);
+  BOOST_TEST(f.number_of_seam_curves - f.seam_curves_matched <= r.number_of_seam_curves - r.seam_curves_matched);
+  BOOST_TEST(f.seam_length == r.seam_length - s.cut_length_closed, tt::tolerance(1e-9));
+  BOOST_TEST(f.compactness > r.compactness);
+  // the cuts left are a subset of those before, and no border between two charts went
+  const std::set<Surface_mesh::Edge_index> before(r.seam_edges.begin(), r.seam_edges.end());
+  for(auto e : f.seam_edges) BOOST_TEST(before.count(e) == 1u);
+  for(auto e : r.seam_edges) {
+    const auto h = halfedge(e, tm);
+    if(chart.at(face(h, tm)) != chart.at(face(opposite(h, tm), tm)))
+      BOOST_TEST(std::count(f.seam_edges.begin(), f.seam_edges.end(), e) == 1);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(cut_shortening_rejects_bad_input)
+{
+  Surface_mesh tm = make<Surface_mesh>(polar(4, 16, flat_disk(1.)));
+  Face_map<Surface_mesh> chart;
+  for(auto f : faces(tm)) chart[f] = 0;
+  const auto f = QD::flatten_charts(tm, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(f);
+  // without cuts: nothing to do
+  const auto none = QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f);
+  BOOST_REQUIRE(none);
+  BOOST_TEST(!none.kept);
+  BOOST_TEST(none.cut_curves == 0u);
+  BOOST_TEST(none.trials == 0u);
+  // a segmentation of another mesh, one not flattened, a chart id out of range, a bad threshold
+  const Surface_mesh other = make<Surface_mesh>(polar(5, 16, flat_disk(1.)));
+  Face_map<Surface_mesh> other_chart;
+  for(auto g : faces(other)) other_chart[g] = 0;
+  BOOST_TEST(QD::shorten_chart_cuts(other, boost::make_assoc_property_map(other_chart), f).status ==
+             QD::Error_code::INVALID_ARGUMENT);
+  QD::Chart_flattening_result<Surface_mesh> unflattened = f;
+  unflattened.flattened = false;
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), unflattened).status ==
+             QD::Error_code::INVALID_ARGUMENT);
+  Face_map<Surface_mesh> beyond = chart;
+  beyond[*faces(tm).begin()] = 1;
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(beyond), f).status ==
+             QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f,
+                                    QD::parameters::area_preservation(2.))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  // invalid coordinates
+  tm.point(*vertices(tm).begin()) = Surface_mesh::Point(std::nan(""), 0, 0);
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f).status ==
+             QD::Error_code::INVALID_COORDINATES);
+  Surface_mesh empty;
+  Face_map<Surface_mesh> no_chart;
+  BOOST_TEST(QD::shorten_chart_cuts(empty, boost::make_assoc_property_map(no_chart), f).status ==
+             QD::Error_code::EMPTY_MESH);
+}
 
 BOOST_AUTO_TEST_SUITE_END()
 } // namespace seam_measures_tests

@@ -21,7 +21,7 @@ foreach(expected
     "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--min-fold-length LENGTH=5%" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--area-preservation ALPHA:0..1=0.5" "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
-    "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--sequential" "--json" "--verbose"
+    "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--no-shorten-cuts" "--sequential" "--json" "--verbose"
     "--quiet" "--version" "Default: 200 mm")
   string(FIND "${help}" "${expected}" at)
   if(at LESS 0)
@@ -104,6 +104,19 @@ else()
   if((charts GREATER 1 AND no_smoothing) OR NOT no_patterns)
     string(APPEND failures "--json: seam_smoothing missing or patterns present\n")
   endif()
+  # cut_shortening unless switched off (and never with the paper's criterion)
+  string(JSON shortening ERROR_VARIABLE no_shortening GET "${json}" cut_shortening)
+  if(no_shortening)
+    string(APPEND failures "--json: cut_shortening missing\n")
+  endif()
+  foreach(off "--no-shorten-cuts" "--criterion;lpfb-ip")
+    execute_process(COMMAND "${PROGRAM}" "${MESH}" --json ${off} RESULT_VARIABLE code OUTPUT_VARIABLE json_off
+                    ERROR_VARIABLE err)
+    string(JSON shortening ERROR_VARIABLE no_shortening GET "${json_off}" cut_shortening)
+    if(NOT code EQUAL 0 OR NOT no_shortening)
+      string(APPEND failures "--json ${off}: exit code ${code}, cut_shortening present or stderr '${err}'\n")
+    endif()
+  endforeach()
 endif()
 # with a seam allowance where the program has Clipper, refused with a message where it has not
 set(allowance "")

@@ -1,0 +1,251 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_SHORTEN_CHART_CUTS_H
+#define CGAL_QD_SHORTEN_CHART_CUTS_H
+
+/// \file shorten_chart_cuts.h
+/// Closes the cuts inside the charts of a finished segmentation, whole or
+/// from their loose end, wherever the chart still flattens within the
+/// thresholds without them.
+
+#include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/chart_criterion.h>
+#include <CGAL_QD/flatten_charts.h>
+#include <CGAL_QD/internal/chart_evaluator.h>
+#include <CGAL_QD/internal/constants.h>
+#include <CGAL_QD/internal/cut_shortening.h>
+#include <CGAL_QD/internal/validation.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <memory>
+#include <vector>
+
+namespace CGAL_QD {
+
+/// \ingroup PkgCGAL_QDRef
+/// what `shorten_chart_cuts()` did.
+template <class TriangleMesh>
+struct Cut_shortening_result
+{
+  Error_code status = Error_code::OK;
+  /// whether shortened cuts were kept: `flattening` then holds the charts flattened with them
+  bool kept = false;
+  std::size_t cut_curves = 0;      ///< the cut curves inside the charts of the input
+  /// of them, those that the charts' trials closed whole or in part, before the flattening that
+  /// decides what is kept
+  std::size_t cuts_passing_trials = 0;
+  std::size_t cuts_shortened = 0;  ///< of them, those closed whole or in part in the end (when `kept`)
+  std::size_t cuts_closed = 0;     ///< of `cuts_shortened`, those closed whole
+  double cut_length = 0;           ///< the length of the input's cuts
+  double cut_length_closed = 0;    ///< the length closed (when `kept`)
+  std::size_t trials = 0;          ///< charts flattened and measured to decide
+  /// the flattening of the charts with the shortened cuts, when `kept`
+  Chart_flattening_result<TriangleMesh> flattening;
+  double time_ms = 0;
+
+  explicit operator bool() const { return status == Error_code::OK; }
+};
+
+/// \ingroup PkgCGAL_QDRef
+/// closes the cuts inside the charts of a segmentation where the charts still
+/// flatten within the thresholds without them, and flattens the charts again.
+///
+/// A cut is a seam with the same chart on both sides (a slit that lets a
+/// chart flatten, as the merging leaves them); most end loose inside their
+/// chart (darts). The merging removes a border between two charts only whole,
+/// so many cuts are longer than their chart needs. Each cut curve (a chain of
+/// cut edges between the chart's border, the mesh's border, junctions of three
+/// or more cuts and loose ends) is tried, in each chart from the longest: it
+/// is closed whole if the chart, flattened as a merging trial flattens it
+/// (`Chart_criterion`), stays within the thresholds with a margin of 5 % on
+/// A_loc, else over half of its edges from its loose end, else a quarter, and
+/// so on down to one edge, the first that passes being kept; a cut without a
+/// loose end is closed whole or not at all. The charts do not change. Then
+/// every chart is flattened again (`flatten_charts()`, which fits the two
+/// sides of every seam to a common length); the cuts of a chart that is then
+/// rejected or overlaps, or one of whose seams no longer matches in length,
+/// are put back as they were (or, where none of the charts in the failure was
+/// shortened, those of the charts next to them: the fit couples the charts),
+/// and the charts flattened again, until every
+/// chart is accepted, none overlaps and no more seam curves end unmatched than
+/// in `segmentation`: the shortened cuts are then kept. A shorter cut is
+/// shorter to cut and to sew, and a chart with shorter cuts is rounder (a cut
+/// counts twice in its perimeter).
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag` (the charts are tried in parallel, and flattened as
+///         `flatten_charts()` does); the result is the same
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam FaceChartMap a model of `ReadablePropertyMap` from faces to an integral chart id in
+///         `[0, segmentation.number_of_charts)`
+/// \param tm the triangle mesh
+/// \param face_chart the charts of the segmentation
+/// \param segmentation the flattening of those charts (`segment_quasi_developable()`'s result,
+///        `smooth_segmentation_seams()`'s `flattening` for its mesh, or `flatten_charts()`'s):
+///        its `seam_edges`, `seam_curves_matched`, `unmatched_seams` and `points` (the positions
+///        the charts are flattened with, when there is one per vertex) are used
+/// \param np optional named parameters: the thresholds and criterion of the segmentation
+///   (`CGAL_QD::parameters::max_area_distortion`, `max_l2_stretch`, `max_local_area_distortion`,
+///   `chart_criterion`, `overlap_tolerance`, `area_preservation`), as given to it, and
+///   `vertex_point_map`, `vertex_index_map`, `face_index_map`, `halfedge_index_map`
+/// \returns a `Cut_shortening_result`; with `kept` false, the input's segmentation stands.
+///          `INVALID_ARGUMENT` if `segmentation` is not a flattened, successful result for `tm`,
+///          a chart id is out of range, or a threshold is invalid; the statuses of
+///          `flatten_charts()` on invalid input.
+/// \sa `smooth_chart_cuts()`, which makes the cuts smooth instead
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class TriangleMesh, class FaceChartMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, const FaceChartMap& face_chart,
+                                                       const Chart_flattening_result<TriangleMesh>& segmentation,
+                                                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  const auto start = std::chrono::steady_clock::now();
+  Cut_shortening_result<TriangleMesh> result;
+  auto finish = [&]() {
+    result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  };
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+  typedef typename std::remove_const<decltype(fim)>::type FIM;
+  typedef typename std::remove_const<decltype(vim)>::type VIM;
+  const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
+
+  result.status = internal::validate_mesh_to_segment(tm, vpm);
+  if(result.status != Error_code::OK) return finish();
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm)), n = segmentation.number_of_charts;
+  if(!internal::thresholds_valid(thresholds) || !segmentation || !segmentation.flattened ||
+     segmentation.number_of_faces != nf) {
+    result.status = Error_code::INVALID_ARGUMENT;
+    return finish();
+  }
+  std::vector<std::size_t> chart(nf);
+  for(face_descriptor f : faces(tm)) {
+    const long long id = static_cast<long long>(get(face_chart, f));
+    if(id < 0 || static_cast<unsigned long long>(id) >= n) {
+      result.status = Error_code::INVALID_ARGUMENT;
+      return finish();
+    }
+    chart[get(fim, f)] = static_cast<std::size_t>(id);
+  }
+  std::vector<char> seam(num_halfedges(tm), 0);
+  for(edge_descriptor e : segmentation.seam_edges)
+    seam[get(him, halfedge(e, tm))] = seam[get(him, opposite(halfedge(e, tm), tm))] = 1;
+
+  // the cuts tried as the merging tries a chart, with its margin below the A_loc bound
+  // the points the segmentation was flattened with (the denoised ones, say)
+  const std::vector<std::array<double, 3>> points =
+      segmentation.points.size() == static_cast<std::size_t>(num_vertices(tm))
+          ? segmentation.points
+          : internal::points_by_index(tm, vpm, vim);
+  internal::Merge_thresholds trial_thresholds = thresholds;
+  trial_thresholds.max_local_area_distortion *= 1. - internal::local_area_distortion_margin;
+  const internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points, trial_thresholds);
+  const auto trial = [&](const std::vector<face_descriptor>& fs, const auto& is_cut) {
+    return evaluator.evaluate(fs, is_cut, nullptr, nullptr, nullptr, 1000., true, nullptr).accepted;
+  };
+  std::vector<internal::Cut_shortening> per_chart;
+  std::vector<std::vector<std::size_t>> closed;
+  const internal::Cut_shortening s =
+      internal::shorten_cuts<ConcurrencyTag>(tm, fim, him, vim, points, trial, chart, n, seam, &per_chart, &closed);
+  result.cut_curves = s.cut_curves;
+  result.cut_length = s.length_before;
+  result.trials = s.trials;
+  result.cuts_passing_trials = s.curves_shortened;
+  std::vector<char> shortened(n, 0);
+  for(std::size_t k = 0; k < n; ++k) shortened[k] = per_chart[k].curves_shortened > 0 ? 1 : 0;
+
+  // every chart flattened again with the cuts left; where a chart shortened
+  // is then rejected or overlaps, or a seam of it stops matching in length,
+  // its cuts are put back as they were, and all flattened again
+  const std::size_t unmatched_before = segmentation.number_of_seam_curves - segmentation.seam_curves_matched;
+  auto unmatched_before_too = [&](const std::pair<std::size_t, std::size_t>& pair) {
+    return std::find(segmentation.unmatched_seams.begin(), segmentation.unmatched_seams.end(), pair) !=
+           segmentation.unmatched_seams.end();
+  };
+  Chart_flattening_result<TriangleMesh>& f = result.flattening;
+  while(std::find(shortened.begin(), shortened.end(), 1) != shortened.end()) {
+    std::vector<edge_descriptor> seams;
+    for(edge_descriptor e : edges(tm))
+      if(seam[get(him, halfedge(e, tm))]) seams.push_back(e);
+    f = Chart_flattening_result<TriangleMesh>();
+    f.points = points;
+    internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
+                                                   std::function<void(const char*, double)>(), f, nullptr, false,
+                                                   evaluator.orderings());
+    if(!f) {
+      result.status = f.status;
+      break;
+    }
+    if(f.rejected_charts == 0 && f.overlapping_charts == 0 &&
+       f.number_of_seam_curves - f.seam_curves_matched <= unmatched_before) {
+      result.kept = true;
+      break;
+    }
+    std::vector<char> restore(n, 0);
+    for(std::size_t k = 0; k < n; ++k)
+      if(!f.charts[k].accepted || f.charts[k].overlap) restore[k] = 1;
+    for(const auto& pair : f.unmatched_seams)
+      if(!unmatched_before_too(pair)) restore[pair.first] = restore[pair.second] = 1;
+    // the fit of the seams couples the charts: where no chart in the failure
+    // was shortened, the shortened charts next to them are put back
+    bool restored = false;
+    for(int ring = 0; ring < 2 && !restored; ++ring) {
+      if(ring == 1) {
+        std::vector<char> next = restore;
+        for(edge_descriptor e : seams) {
+          const halfedge_descriptor h = halfedge(e, tm);
+          const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
+          if(restore[a]) next[b] = 1;
+          if(restore[b]) next[a] = 1;
+        }
+        restore.swap(next);
+      }
+      for(std::size_t k = 0; k < n; ++k)
+        if(restore[k] && shortened[k]) {
+          for(std::size_t h : closed[k]) seam[h] = 1;
+          shortened[k] = 0;
+          restored = true;
+        }
+    }
+    if(!restored) break;
+  }
+  if(!result.kept) {
+    result.flattening = Chart_flattening_result<TriangleMesh>();
+    return finish();
+  }
+  for(std::size_t k = 0; k < n; ++k)
+    if(shortened[k]) {
+      result.cuts_shortened += per_chart[k].curves_shortened;
+      result.cuts_closed += per_chart[k].curves_closed;
+      result.cut_length_closed += per_chart[k].length_closed;
+    }
+  return finish();
+}
+
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_SHORTEN_CHART_CUTS_H
