@@ -311,9 +311,11 @@ int main(int argc, char** argv)
     const Mesh& m = smoothing.result.kept ? smoothed : mesh;
     const auto m_chart = m.property_map<Mesh::Face_index, std::size_t>("f:chart").first;
     smoothing.shortening_requested = true;
+    progress("shorten", 0.);
     CGAL_QD::Cut_shortening_result<Mesh>& c = smoothing.shortening;
     c = o.sequential ? CGAL_QD::shorten_chart_cuts<CGAL::Sequential_tag>(m, m_chart, r, snp)
                      : CGAL_QD::shorten_chart_cuts<CGAL::Parallel_if_available_tag>(m, m_chart, r, snp);
+    progress("shorten", 1.);
     r.time_total_ms += c.time_ms;
     if(c.kept) static_cast<CGAL_QD::Chart_flattening_result<Mesh>&>(r) = std::move(c.flattening);
   }

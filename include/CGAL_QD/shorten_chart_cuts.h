@@ -26,11 +26,12 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <utility>
-#include <memory>
 #include <vector>
 
 namespace CGAL_QD {
