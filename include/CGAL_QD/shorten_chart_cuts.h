@@ -152,16 +152,18 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     }
     chart[get(fim, f)] = static_cast<std::size_t>(id);
   }
+  // the seams (the mesh border is open anyway)
   std::vector<char> seam(num_halfedges(tm), 0);
   for(edge_descriptor e : segmentation.seam_edges)
-    seam[get(him, halfedge(e, tm))] = seam[get(him, opposite(halfedge(e, tm), tm))] = 1;
+    if(!is_border_edge(halfedge(e, tm), tm))
+      seam[get(him, halfedge(e, tm))] = seam[get(him, opposite(halfedge(e, tm), tm))] = 1;
 
-  // the cuts tried as the merging tries a chart, with its margin below the A_loc bound
   // the points the segmentation was flattened with (the denoised ones, say)
   const std::vector<std::array<double, 3>> points =
       segmentation.points.size() == static_cast<std::size_t>(num_vertices(tm))
           ? segmentation.points
           : internal::points_by_index(tm, vpm, vim);
+  // the cuts tried as the merging tries a chart, with its margin below the A_loc bound
   internal::Merge_thresholds trial_thresholds = thresholds;
   trial_thresholds.max_local_area_distortion *= 1. - internal::local_area_distortion_margin;
   const internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points, trial_thresholds);

@@ -78,17 +78,16 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
   };
 
   // the cuts, and the vertices on a chart's border or the mesh's border
+  // (whether `seam` marks the chart's border or not)
   std::vector<halfedge_descriptor> cuts;
   std::vector<char> fixed(num_vertices(tm), 0);
   for(auto e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
-    const bool border = is_border(h, tm) || is_border(o, tm);
-    if(!border && !seam[get(him, h)]) continue;
-    if(!border && chart_of(h) == chart_of(o)) {
+    if(is_border(h, tm) || is_border(o, tm) || chart_of(h) != chart_of(o)) {
+      fixed[get(vim, source(h, tm))] = fixed[get(vim, target(h, tm))] = 1;
+    } else if(seam[get(him, h)]) {
       cuts.push_back(h);
-      continue;
     }
-    fixed[get(vim, source(h, tm))] = fixed[get(vim, target(h, tm))] = 1;
   }
   if(per_chart) per_chart->assign(n, Cut_shortening());
   if(closed) closed->assign(n, std::vector<std::size_t>());
