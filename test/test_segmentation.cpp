@@ -2696,6 +2696,41 @@ BOOST_AUTO_TEST_CASE(needless_cuts_are_closed_and_needed_ones_kept)
     BOOST_TEST(s.cut_length_closed == 0.);
     BOOST_TEST(s.flattening.charts.empty());
   }
+  // two disks apart, the first with the dart: the second, neither shortened
+  // nor next to a chart shortened, keeps its flattening exactly
+  {
+    Soup soup = polar(rings, sectors, flat_disk(1.));
+    const Soup other = polar(rings, sectors, [](double rho, double phi) {
+      return P3{3. + rho * std::cos(phi), rho * std::sin(phi), 0.2 * rho * rho};
+    });
+    const std::size_t offset = soup.points.size(), first_faces = soup.triangles.size();
+    soup.points.insert(soup.points.end(), other.points.begin(), other.points.end());
+    for(Tri t : other.triangles) soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const Surface_mesh tm = make<Surface_mesh>(soup);
+    Face_map<Surface_mesh> chart;
+    for(auto g : faces(tm)) chart[g] = std::size_t(g) < first_faces ? 0 : 1;
+    std::map<Surface_mesh::Edge_index, bool> cut;
+    dart_to_the_centre(tm, rings, sectors, cut);
+    auto f = QD::flatten_charts(tm, boost::make_assoc_property_map(chart),
+                                CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(cut)));
+    BOOST_REQUIRE(f);
+    BOOST_REQUIRE(f.number_of_charts == 2u);
+    // the second disk's flattening moved, as a flattening of its own would not be
+    for(std::size_t c = 3 * first_faces; c < f.corner_uv.size(); ++c) {
+      f.corner_uv[c][0] += 5.;
+      f.corner_uv[c][1] += 7.;
+    }
+    const auto s = QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f);
+    BOOST_REQUIRE(s);
+    BOOST_TEST(s.kept);
+    BOOST_TEST(s.cuts_closed == 1u);
+    BOOST_TEST(s.flattening.seam_edges.empty());
+    BOOST_TEST(s.flattening.rejected_charts == 0u);
+    std::size_t same = 0;
+    for(std::size_t c = 3 * first_faces; c < f.corner_uv.size(); ++c) same += s.flattening.corner_uv[c] == f.corner_uv[c];
+    BOOST_TEST(same == f.corner_uv.size() - 3 * first_faces);
+    BOOST_TEST(s.flattening.charts[1].local_area_distortion == f.charts[1].local_area_distortion);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(fandisk_darts_are_shortened_from_their_loose_ends)
@@ -2758,6 +2793,10 @@ BOOST_AUTO_TEST_CASE(cut_shortening_rejects_bad_input)
   QD::Chart_flattening_result<Surface_mesh> unflattened = f;
   unflattened.flattened = false;
   BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), unflattened).status ==
+             QD::Error_code::INVALID_ARGUMENT);
+  QD::Chart_flattening_result<Surface_mesh> without_uv = f;
+  without_uv.corner_uv.clear();
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), without_uv).status ==
              QD::Error_code::INVALID_ARGUMENT);
   Face_map<Surface_mesh> beyond = chart;
   beyond[*faces(tm).begin()] = 1;

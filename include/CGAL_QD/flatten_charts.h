@@ -127,7 +127,10 @@ double seam_length_of(const TriangleMesh& tm,
 // Flattens the charts `chart` (compact ids by face index, n charts) cut open
 // along `seams`, and fills the chart and seam fields of `result` (whose
 // `points` hold the points by vertex index). With `fit_only_if_accepted`, the
-// seams are fitted to common lengths only when every chart is accepted.
+// seams are fitted to common lengths only when every chart is accepted. With
+// `frozen` (by chart) and `before` (a flattening of the same charts), a frozen
+// chart keeps its flattening and report from `before` and is never fitted:
+// the sides of its seams are the lengths its neighbours fit to.
 template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
 void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, const VIM& vim, const HIM& him,
                           const std::vector<std::size_t>& chart, std::size_t n,
@@ -135,7 +138,9 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
                           const Merge_thresholds& thresholds, const std::function<void(const char*, double)>& progress,
                           Chart_flattening_result<TriangleMesh>& result,
                           Flattening_cache<Chart_report>* cache = nullptr, bool fit_only_if_accepted = false,
-                          std::shared_ptr<Ordering_cache> orderings = nullptr)
+                          std::shared_ptr<Ordering_cache> orderings = nullptr,
+                          const std::vector<char>* frozen = nullptr,
+                          const Chart_flattening_result<TriangleMesh>* before = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -189,9 +194,19 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   std::vector<std::size_t> size(n);
   for(std::size_t k = 0; k < n; ++k) size[k] = members[k].size();
   const std::vector<std::size_t> largest_first = dearest_first(size);
+  auto is_frozen = [&](std::size_t k) { return frozen && before && (*frozen)[k]; };
   for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     const std::size_t k = largest_first[i];
-    if(!members[k].empty()) result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
+    if(members[k].empty()) return;
+    if(!is_frozen(k)) {
+      result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
+      return;
+    }
+    result.charts[k] = before->charts[k];
+    result.charts[k].seams_matched = true;  // measured again below
+    uvs[k].resize(3 * members[k].size());
+    for(std::size_t f = 0; f < members[k].size(); ++f)
+      for(int j = 0; j < 3; ++j) uvs[k][3 * f + j] = before->corner_uv[3 * get(fim, members[k][f]) + j];
   });
   const std::array<double, 2> origin = {0., 0.};
   auto corner_uv = [&](std::size_t i, int k) -> const std::array<double, 2>& {
@@ -242,7 +257,9 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
         }
         const std::size_t a = chart[get(fim, face(curve.front(), tm))],
                           b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
-        const double common = kept[a] ? side[0] : kept[b] ? side[1] : (side[0] + side[1]) / 2;
+        const double common = kept[a] || is_frozen(a)   ? side[0]
+                              : kept[b] || is_frozen(b) ? side[1]
+                                                        : (side[0] + side[1]) / 2;
         if(std::abs(side[0] - side[1]) > matched_seam_tolerance * (std::max)(side[0], side[1])) {
           unmatched = true;
           on_unmatched[a] = on_unmatched[b] = 1;
@@ -264,7 +281,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     auto fit = [&](double pull_weight, bool exact) {
       list.clear();
       for(std::size_t k : largest_first)
-        if(todo[k] && !kept[k] && result.charts[k].accepted) list.push_back(k);
+        if(todo[k] && !kept[k] && !is_frozen(k) && result.charts[k].accepted) list.push_back(k);
       fitted.assign(list.size(), Chart_report());
       fitted_uv.assign(list.size(), {});
       for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t i) {

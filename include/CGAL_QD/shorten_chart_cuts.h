@@ -62,7 +62,8 @@ struct Cut_shortening_result
 
 /// \ingroup PkgCGAL_QDRef
 /// closes the cuts inside the charts of a segmentation where the charts still
-/// flatten within the thresholds without them, and flattens the charts again.
+/// flatten within the thresholds without them, and flattens again the charts
+/// it changed and their neighbours.
 ///
 /// A cut is a seam with the same chart on both sides (a slit that lets a
 /// chart flatten, as the merging leaves them); most end loose inside their
@@ -75,8 +76,12 @@ struct Cut_shortening_result
 /// A_loc, else over half of its edges from its loose end, else a quarter, and
 /// so on down to one edge, the first that passes being kept; a cut without a
 /// loose end is closed whole or not at all. The charts do not change. Then
-/// every chart is flattened again (`flatten_charts()`, which fits the two
-/// sides of every seam to a common length); the cuts of a chart that is then
+/// the charts with shortened cuts and the charts next to them are flattened
+/// again as `flatten_charts()` does, the two sides of their seams fitted to a
+/// common length; every other chart keeps its flattening from `segmentation`,
+/// and the sides of its seams are the lengths its neighbours fit to (a
+/// flattening made afresh need not match the seams an earlier one matched:
+/// seams just within 0.5 % can flip). The cuts of a chart that is then
 /// rejected or overlaps, or one of whose seams no longer matches in length,
 /// are put back as they were (or, where none of the charts in the failure was
 /// shortened, those of the charts next to them: the fit couples the charts),
@@ -96,8 +101,9 @@ struct Cut_shortening_result
 /// \param face_chart the charts of the segmentation
 /// \param segmentation the flattening of those charts (`segment_quasi_developable()`'s result,
 ///        `smooth_segmentation_seams()`'s `flattening` for its mesh, or `flatten_charts()`'s):
-///        its `seam_edges`, `seam_curves_matched`, `unmatched_seams` and `points` (the positions
-///        the charts are flattened with, when there is one per vertex) are used
+///        its `seam_edges`, `seam_curves_matched`, `unmatched_seams`, `charts`, `corner_uv` and
+///        `points` (the positions the charts are flattened with, when there is one per vertex)
+///        are used
 /// \param np optional named parameters: the thresholds and criterion of the segmentation
 ///   (`CGAL_QD::parameters::max_area_distortion`, `max_l2_stretch`, `max_local_area_distortion`,
 ///   `chart_criterion`, `overlap_tolerance`, `area_preservation`), as given to it, and
@@ -139,7 +145,8 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   if(result.status != Error_code::OK) return finish();
   const std::size_t nf = static_cast<std::size_t>(num_faces(tm)), n = segmentation.number_of_charts;
   if(!internal::thresholds_valid(thresholds) || !segmentation || !segmentation.flattened ||
-     segmentation.number_of_faces != nf) {
+     segmentation.number_of_faces != nf || segmentation.corner_uv.size() != 3 * nf ||
+     segmentation.charts.size() != n) {
     result.status = Error_code::INVALID_ARGUMENT;
     return finish();
   }
@@ -194,11 +201,20 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     std::vector<edge_descriptor> seams;
     for(edge_descriptor e : edges(tm))
       if(seam[get(him, halfedge(e, tm))]) seams.push_back(e);
+    // the charts neither shortened nor next to one keep their flattening
+    std::vector<char> frozen(n, 1);
+    for(std::size_t k = 0; k < n; ++k)
+      if(shortened[k]) frozen[k] = 0;
+    for(edge_descriptor e : seams) {
+      const halfedge_descriptor h = halfedge(e, tm);
+      const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
+      if(shortened[a] || shortened[b]) frozen[a] = frozen[b] = 0;
+    }
     f = Chart_flattening_result<TriangleMesh>();
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
                                                    std::function<void(const char*, double)>(), f, nullptr, false,
-                                                   evaluator.orderings());
+                                                   evaluator.orderings(), &frozen, &segmentation);
     if(!f) {
       result.status = f.status;
       break;
