@@ -180,7 +180,7 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   std::vector<internal::Cut_shortening> per_chart;
   std::vector<std::vector<std::size_t>> closed;
   const internal::Cut_shortening s =
-      internal::shorten_cuts<ConcurrencyTag>(tm, fim, him, vim, points, trial, chart, n, seam, &per_chart, &closed);
+      internal::shorten_cuts<ConcurrencyTag>(tm, fim, him, vim, points, trial, chart, n, seam, per_chart, closed);
   result.cut_curves = s.cut_curves;
   result.cut_length = s.length_before;
   result.trials = s.trials;
@@ -188,9 +188,10 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   std::vector<char> shortened(n, 0);
   for(std::size_t k = 0; k < n; ++k) shortened[k] = per_chart[k].curves_shortened > 0 ? 1 : 0;
 
-  // every chart flattened again with the cuts left; where a chart shortened
-  // is then rejected or overlaps, or a seam of it stops matching in length,
-  // its cuts are put back as they were, and all flattened again
+  // the charts shortened and their neighbours flattened again with the cuts
+  // left; where a chart shortened is then rejected or overlaps, or a seam of
+  // it stops matching in length, its cuts are put back as they were, and the
+  // charts flattened again
   const std::size_t unmatched_before = segmentation.number_of_seam_curves - segmentation.seam_curves_matched;
   auto unmatched_before_too = [&](const std::pair<std::size_t, std::size_t>& pair) {
     return std::find(segmentation.unmatched_seams.begin(), segmentation.unmatched_seams.end(), pair) !=
@@ -201,15 +202,20 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     std::vector<edge_descriptor> seams;
     for(edge_descriptor e : edges(tm))
       if(seam[get(him, halfedge(e, tm))]) seams.push_back(e);
+    // the charts marked, and the charts across a seam from them
+    auto with_neighbours = [&](std::vector<char> marked) {
+      std::vector<char> out = marked;
+      for(edge_descriptor e : seams) {
+        const halfedge_descriptor h = halfedge(e, tm);
+        const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
+        if(marked[a]) out[b] = 1;
+        if(marked[b]) out[a] = 1;
+      }
+      return out;
+    };
     // the charts neither shortened nor next to one keep their flattening
-    std::vector<char> frozen(n, 1);
-    for(std::size_t k = 0; k < n; ++k)
-      if(shortened[k]) frozen[k] = 0;
-    for(edge_descriptor e : seams) {
-      const halfedge_descriptor h = halfedge(e, tm);
-      const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
-      if(shortened[a] || shortened[b]) frozen[a] = frozen[b] = 0;
-    }
+    std::vector<char> frozen = with_neighbours(shortened);
+    for(char& x : frozen) x = x ? 0 : 1;
     f = Chart_flattening_result<TriangleMesh>();
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
@@ -233,16 +239,7 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     // was shortened, the shortened charts next to them are put back
     bool restored = false;
     for(int ring = 0; ring < 2 && !restored; ++ring) {
-      if(ring == 1) {
-        std::vector<char> next = restore;
-        for(edge_descriptor e : seams) {
-          const halfedge_descriptor h = halfedge(e, tm);
-          const std::size_t a = chart[get(fim, face(h, tm))], b = chart[get(fim, face(opposite(h, tm), tm))];
-          if(restore[a]) next[b] = 1;
-          if(restore[b]) next[a] = 1;
-        }
-        restore.swap(next);
-      }
+      if(ring == 1) restore = with_neighbours(restore);
       for(std::size_t k = 0; k < n; ++k)
         if(restore[k] && shortened[k]) {
           for(std::size_t h : closed[k]) seam[h] = 1;

@@ -54,15 +54,15 @@ struct Cut_shortening
 // Each curve is tried with the cuts as the curves before it left them (a
 // junction whose other cuts were closed may have become a loose end). The
 // charts are independent and are done in parallel, the dearest first; the
-// result does not depend on the threads. `seam` is updated; `per_chart`, if
-// given, receives what was done in every chart, and `closed` the halfedge
-// indices (both of each edge) that every chart's shortening closed.
+// result does not depend on the threads. `seam` is updated; `per_chart`
+// receives what was done in every chart, and `closed` the halfedge indices
+// (both of each edge) that every chart's shortening closed.
 template <class ConcurrencyTag, class TriangleMesh, class FIM, class HIM, class VIM, class Evaluate>
 Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& him, const VIM& vim,
                             const std::vector<std::array<double, 3>>& points, const Evaluate& evaluate,
                             const std::vector<std::size_t>& chart, std::size_t n, std::vector<char>& seam,
-                            std::vector<Cut_shortening>* per_chart = nullptr,
-                            std::vector<std::vector<std::size_t>>* closed = nullptr)
+                            std::vector<Cut_shortening>& per_chart,
+                            std::vector<std::vector<std::size_t>>& closed)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -89,8 +89,8 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
       cuts.push_back(h);
     }
   }
-  if(per_chart) per_chart->assign(n, Cut_shortening());
-  if(closed) closed->assign(n, std::vector<std::size_t>());
+  per_chart.assign(n, Cut_shortening());
+  closed.assign(n, std::vector<std::size_t>());
   if(cuts.empty()) return result;
 
   // every curve goes through vertices inside one chart only, whose edges no
@@ -164,8 +164,8 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
   });
   for(std::size_t t = 0; t < todo.size(); ++t) {
     const Cut_shortening& s = done[t];
-    if(per_chart) (*per_chart)[todo[t]] = s;
-    if(closed) (*closed)[todo[t]] = std::move(closed_in[t]);
+    per_chart[todo[t]] = s;
+    closed[todo[t]] = std::move(closed_in[t]);
     result.curves_shortened += s.curves_shortened;
     result.curves_closed += s.curves_closed;
     result.length_before += s.length_before;
