@@ -683,18 +683,26 @@ BOOST_AUTO_TEST_CASE(compactness_ratio_keeps_a_sprawling_join_in_two_pieces)
     BOOST_TEST(r.number_of_charts == 2u);
     BOOST_TEST(r.trials == 0u);
   }
-  // outside [0, 1]: INVALID_ARGUMENT, nothing written
-  for(const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+  // a ratio outside [0, 1], or a negative or NaN bound of the criterion:
+  // INVALID_ARGUMENT from every step, nothing written
+  auto refused = [&](const auto& np) {
     Chart_map<Surface_mesh> chart = strips;
-    BOOST_TEST((QD::merge_charts_by_boundaries(tm, boost::make_assoc_property_map(chart),
-                                               QD::parameters::compactness_ratio(bad))
-                    .status == QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST((QD::merge_charts_by_boundaries(tm, boost::make_assoc_property_map(chart), np).status ==
+                QD::Error_code::INVALID_ARGUMENT));
     BOOST_TEST((chart == strips));
     Chart_map<Surface_mesh> untouched;
-    BOOST_TEST((QD::segment_quasi_developable(tm, boost::make_assoc_property_map(untouched),
-                                              QD::parameters::compactness_ratio(bad))
-                    .status == QD::Error_code::INVALID_ARGUMENT));
+    BOOST_TEST((QD::segment_quasi_developable(tm, boost::make_assoc_property_map(untouched), np).status ==
+                QD::Error_code::INVALID_ARGUMENT));
     BOOST_TEST(untouched.empty());
+    BOOST_TEST((QD::flatten_charts(tm, boost::make_assoc_property_map(chart), np).status ==
+                QD::Error_code::INVALID_ARGUMENT));
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for(const double bad : {-0.1, 1.5, nan}) refused(QD::parameters::compactness_ratio(bad));
+  for(const double bad : {-0.1, nan}) {
+    refused(QD::parameters::max_area_distortion(bad));
+    refused(QD::parameters::max_l2_stretch(bad));
+    refused(QD::parameters::max_local_area_distortion(bad));
   }
 }
 

@@ -129,9 +129,12 @@ Merge_thresholds merge_thresholds_from(const NamedParameters& np)
 }
 
 // whether the parameters that the library does not clamp are in their ranges
+// (the bounds of the criterion: not negative and not NaN; infinity is no bound)
 inline bool thresholds_valid(const Merge_thresholds& t)
 {
-  return t.area_preservation >= 0 && t.area_preservation <= 1 && t.compactness_ratio >= 0 && t.compactness_ratio <= 1;
+  return t.area_preservation >= 0 && t.area_preservation <= 1 && t.compactness_ratio >= 0 &&
+         t.compactness_ratio <= 1 && t.max_area_distortion >= 0 && t.max_l2_stretch >= 0 &&
+         t.max_local_area_distortion >= 0;
 }
 
 } // namespace internal
