@@ -128,9 +128,11 @@ double seam_length_of(const TriangleMesh& tm,
 // along `seams`, and fills the chart and seam fields of `result` (whose
 // `points` hold the points by vertex index). With `fit_only_if_accepted`, the
 // seams are fitted to common lengths only when every chart is accepted. With
-// `frozen` (by chart) and `before` (a flattening of the same charts), a frozen
-// chart keeps its flattening and report from `before` and is never fitted:
-// the sides of its seams are the lengths its neighbours fit to.
+// `frozen` (by chart) and `before` (a flattening of the same charts), a chart
+// marked 1 keeps its flattening and report from `before` and is never fitted:
+// the sides of its seams are the lengths its neighbours fit to; a chart marked
+// 2 starts from its flattening in `before` instead of being flattened again,
+// and is fitted with the others.
 template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
 void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, const VIM& vim, const HIM& him,
                           const std::vector<std::size_t>& chart, std::size_t n,
@@ -194,11 +196,12 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   std::vector<std::size_t> size(n);
   for(std::size_t k = 0; k < n; ++k) size[k] = members[k].size();
   const std::vector<std::size_t> largest_first = dearest_first(size);
-  auto is_frozen = [&](std::size_t k) { return frozen && before && (*frozen)[k]; };
+  auto is_frozen = [&](std::size_t k) { return frozen && before && (*frozen)[k] == 1; };
+  auto kept_as_before = [&](std::size_t k) { return frozen && before && (*frozen)[k] != 0; };
   for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     const std::size_t k = largest_first[i];
     if(members[k].empty()) return;
-    if(!is_frozen(k)) {
+    if(!kept_as_before(k)) {
       result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
       return;
     }

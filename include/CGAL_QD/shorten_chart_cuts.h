@@ -62,8 +62,8 @@ struct Cut_shortening_result
 
 /// \ingroup PkgCGAL_QDRef
 /// closes the cuts inside the charts of a segmentation where the charts still
-/// flatten within the thresholds without them, and flattens again the charts
-/// it changed and their neighbours.
+/// flatten within the thresholds without them, flattens again the charts it
+/// changed, and fits their neighbours to them.
 ///
 /// A cut is a seam with the same chart on both sides (a slit that lets a
 /// chart flatten, as the merging leaves them); most end loose inside their
@@ -76,9 +76,11 @@ struct Cut_shortening_result
 /// A_loc, else over half of its edges from its loose end, else a quarter, and
 /// so on down to one edge, the first that passes being kept; a cut without a
 /// loose end is closed whole or not at all. The charts do not change. Then
-/// the charts with shortened cuts and the charts next to them are flattened
-/// again as `flatten_charts()` does, the two sides of their seams fitted to a
-/// common length; every other chart keeps its flattening from `segmentation`,
+/// the charts with shortened cuts are flattened again as `flatten_charts()`
+/// does, and the charts next to them start from their flattenings in
+/// `segmentation`; the two sides of their seams are fitted to a common length
+/// (where that fails, the charts next to them are flattened again too, and
+/// fitted again). Every other chart keeps its flattening from `segmentation`,
 /// and the sides of its seams are the lengths its neighbours fit to (a
 /// flattening made afresh need not match the seams an earlier one matched:
 /// seams just within 0.5 % can flip). The cuts of a chart that is then
@@ -188,16 +190,18 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   std::vector<char> shortened(n, 0);
   for(std::size_t k = 0; k < n; ++k) shortened[k] = per_chart[k].curves_shortened > 0 ? 1 : 0;
 
-  // the charts shortened and their neighbours flattened again with the cuts
-  // left; where a chart shortened is then rejected or overlaps, or a seam of
-  // it stops matching in length, its cuts are put back as they were, and the
-  // charts flattened again
+  // the charts shortened flattened again with the cuts left, and their
+  // neighbours fitted to them; where a chart shortened is then rejected or
+  // overlaps, or a seam of it stops matching in length, the neighbours are
+  // flattened again too, and if that fails as well, its cuts are put back as
+  // they were, and the charts flattened again
   const std::size_t unmatched_before = segmentation.number_of_seam_curves - segmentation.seam_curves_matched;
   auto unmatched_before_too = [&](const std::pair<std::size_t, std::size_t>& pair) {
     return std::find(segmentation.unmatched_seams.begin(), segmentation.unmatched_seams.end(), pair) !=
            segmentation.unmatched_seams.end();
   };
   Chart_flattening_result<TriangleMesh>& f = result.flattening;
+  bool with_neighbours_too = false;
   while(std::find(shortened.begin(), shortened.end(), 1) != shortened.end()) {
     std::vector<edge_descriptor> seams;
     for(edge_descriptor e : edges(tm))
@@ -213,9 +217,13 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
       }
       return out;
     };
-    // the charts neither shortened nor next to one keep their flattening
-    std::vector<char> frozen = with_neighbours(shortened);
-    for(char& x : frozen) x = x ? 0 : 1;
+    // the charts shortened are flattened again, and their neighbours fitted
+    // from their flattenings (or, on the second try, flattened again too);
+    // the others keep their flattening
+    const std::vector<char> near = with_neighbours(shortened);
+    std::vector<char> frozen(n, 1);
+    for(std::size_t k = 0; k < n; ++k)
+      if(near[k]) frozen[k] = shortened[k] || with_neighbours_too ? 0 : 2;
     f = Chart_flattening_result<TriangleMesh>();
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
@@ -230,6 +238,11 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
       result.kept = true;
       break;
     }
+    if(!with_neighbours_too) {
+      with_neighbours_too = true;
+      continue;
+    }
+    with_neighbours_too = false;
     std::vector<char> restore(n, 0);
     for(std::size_t k = 0; k < n; ++k)
       if(!f.charts[k].accepted || f.charts[k].overlap) restore[k] = 1;
