@@ -2672,7 +2672,7 @@ BOOST_AUTO_TEST_CASE(needless_cuts_are_closed_and_needed_ones_kept)
     BOOST_TEST(s.cuts_passing_trials == 1u);
     BOOST_TEST(s.cuts_shortened == 1u);
     BOOST_TEST(s.cuts_closed == 1u);
-    BOOST_TEST(s.trials == 1u);  // closed whole at the first trial
+    BOOST_TEST(s.trials == 2u);  // closed whole at the first trial, tried beside the half
     BOOST_TEST(s.cut_length == dart, tt::tolerance(1e-12));
     BOOST_TEST(s.cut_length_closed == dart, tt::tolerance(1e-12));
     BOOST_TEST(s.flattening.seam_edges.empty());
@@ -2699,7 +2699,7 @@ BOOST_AUTO_TEST_CASE(needless_cuts_are_closed_and_needed_ones_kept)
     BOOST_TEST(s.cut_curves == 1u);
     BOOST_TEST(s.cuts_passing_trials == 0u);
     BOOST_TEST(s.cuts_shortened == 0u);
-    BOOST_TEST(s.trials == 4u);  // 8 edges, 4, 2, 1
+    BOOST_TEST(s.trials == 4u);  // 8 edges, 4, 2, 1 (two at a time)
     BOOST_TEST(s.cut_length == dart, tt::tolerance(1e-12));
     BOOST_TEST(s.cut_length_closed == 0.);
     BOOST_TEST(s.flattening.charts.empty());
@@ -2777,6 +2777,14 @@ BOOST_AUTO_TEST_CASE(fandisk_darts_are_shortened_from_their_loose_ends)
     if(chart.at(face(h, tm)) != chart.at(face(opposite(h, tm), tm)))
       BOOST_TEST(std::count(f.seam_edges.begin(), f.seam_edges.end(), e) == 1);
   }
+  // on one thread: the same trials, cuts and flattening
+  const auto one = QD::shorten_chart_cuts<CGAL::Sequential_tag>(tm, boost::make_assoc_property_map(chart), r);
+  BOOST_REQUIRE(one);
+  BOOST_TEST(one.trials == s.trials);
+  BOOST_TEST(one.cuts_shortened == s.cuts_shortened);
+  BOOST_TEST(one.cut_length_closed == s.cut_length_closed);
+  BOOST_TEST((one.flattening.seam_edges == f.seam_edges));
+  BOOST_TEST((one.flattening.corner_uv == f.corner_uv));
 }
 
 BOOST_AUTO_TEST_CASE(cut_shortening_rejects_bad_input)

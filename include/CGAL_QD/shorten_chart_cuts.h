@@ -94,8 +94,9 @@ struct Cut_shortening_result
 /// counts twice in its perimeter).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag` (the charts are tried in parallel, and flattened as
-///         `flatten_charts()` does); the result is the same
+///         `CGAL::Parallel_if_available_tag` (the charts are tried in parallel, the trials of a
+///         curve two at a time, and the charts flattened as `flatten_charts()` does); the result,
+///         trials included, is the same
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam FaceChartMap a model of `ReadablePropertyMap` from faces to an integral chart id in
 ///         `[0, segmentation.number_of_charts)`

@@ -53,7 +53,8 @@ struct Cut_shortening
 // that passes; a curve without a loose end is closed whole or not at all.
 // Each curve is tried with the cuts as the curves before it left them (a
 // junction whose other cuts were closed may have become a loose end). The
-// charts are independent and are done in parallel, the dearest first; the
+// charts are independent and are done in parallel, the dearest first, and
+// the trials of a curve two at a time (in the order above; both count); the
 // result does not depend on the threads. `seam` is updated; `per_chart`
 // receives what was done in every chart, and `closed` the halfedge indices
 // (both of each edge) that every chart's shortening closed.
@@ -114,7 +115,11 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
   const std::vector<std::size_t> order = dearest_first(size);
   std::vector<Cut_shortening> done(todo.size());
   std::vector<std::vector<std::size_t>> closed_in(todo.size());
-  const auto is_cut = [&](halfedge_descriptor h) { return seam[get(him, h)] != 0; };
+  // the position along the curve being tried of each of its edges (by
+  // halfedge index, both halfedges), `none` elsewhere: a trial closes the
+  // edges before a count. The curves of different charts share no edge.
+  const std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> rank(seam.size(), none);
   for_each_index<ConcurrencyTag>(order.size(), [&](std::size_t t) {
     const std::size_t k = todo[order[t]];
     Cut_shortening& out = done[order[t]];
@@ -145,20 +150,37 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
         from_end = true;
       }
       const bool shortenable = !c.closed && (from_end || loose(c.vertices.front()));
-      for(std::size_t count = m; count > 0; count = shortenable ? count / 2 : 0) {
-        for(std::size_t i = 0; i < count; ++i) set(c.halfedges[i], 0);
-        ++out.trials;
-        if(evaluate(members[k], is_cut)) {
-          ++out.curves_shortened;
-          if(count == m) ++out.curves_closed;
-          for(std::size_t i = 0; i < count; ++i) {
-            out.length_closed += length(c.halfedges[i]);
-            closed_in[order[t]].push_back(get(him, c.halfedges[i]));
-            closed_in[order[t]].push_back(get(him, opposite(c.halfedges[i], tm)));
-          }
-          break;
-        }
-        for(std::size_t i = 0; i < count; ++i) set(c.halfedges[i], 1);
+      std::vector<std::size_t> counts;  // the edges to close, in the order tried
+      for(std::size_t count = m; count > 0; count = shortenable ? count / 2 : 0) counts.push_back(count);
+      for(std::size_t i = 0; i < m; ++i)
+        rank[get(him, c.halfedges[i])] = rank[get(him, opposite(c.halfedges[i], tm))] = i;
+      // the trials two at a time: the second, which the first passing makes
+      // needless, runs beside it on a thread that would otherwise wait once
+      // the other charts are done (the counts do not depend on the threads)
+      std::size_t kept = 0;
+      for(std::size_t first = 0; first < counts.size() && kept == 0; first += 2) {
+        const std::size_t batch = (std::min)(std::size_t(2), counts.size() - first);
+        std::array<char, 2> passed = {0, 0};
+        for_each_index<ConcurrencyTag>(batch, [&](std::size_t j) {
+          const std::size_t count = counts[first + j];
+          passed[j] = evaluate(members[k], [&](halfedge_descriptor h) {
+            const std::size_t i = get(him, h);
+            return seam[i] != 0 && rank[i] >= count;
+          }) ? 1 : 0;
+        });
+        out.trials += batch;
+        for(std::size_t j = 0; j < batch && kept == 0; ++j)
+          if(passed[j]) kept = counts[first + j];
+      }
+      for(halfedge_descriptor h : c.halfedges) rank[get(him, h)] = rank[get(him, opposite(h, tm))] = none;
+      if(kept == 0) continue;
+      ++out.curves_shortened;
+      if(kept == m) ++out.curves_closed;
+      for(std::size_t i = 0; i < kept; ++i) {
+        set(c.halfedges[i], 0);
+        out.length_closed += length(c.halfedges[i]);
+        closed_in[order[t]].push_back(get(him, c.halfedges[i]));
+        closed_in[order[t]].push_back(get(him, opposite(c.halfedges[i], tm)));
       }
     }
   });
