@@ -454,6 +454,10 @@ int main(int argc, char** argv)
             << "  max L2         " << r.max_l2_stretch << "\n"
             << "  max A_loc      " << r.max_local_area_distortion << " %\n"
             << "  overlapping    " << r.overlapping_charts << " charts\n"
+            << (r.rejected_charts > 0 ? "  beyond bounds  " + std::to_string(r.rejected_charts) + " of " +
+                                            std::to_string(r.number_of_charts) +
+                                            " charts beyond the thresholds (see report.json or --json)\n"
+                                      : std::string())
             << "  seam length    " << r.seam_length << ", zigzag " << r.seam_zigzag << ", sides within 0.5 % on "
             << r.seam_curves_matched << " of " << r.number_of_seam_curves << " curves, at most "
             << 100 * r.max_seam_length_mismatch << " % apart\n"

@@ -130,6 +130,13 @@ else()
     string(APPEND failures "--seam-allowance without Clipper: exit code ${code}, stderr '${err}'\n")
   endif()
 endif()
+# bounds that no chart meets: every chart beyond them, and the summary says so
+execute_process(COMMAND "${PROGRAM}" "${MESH}" --max-stretch 0.5 --no-smooth-seams
+                RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT summary MATCHES "beyond bounds  ([0-9]+) of ([0-9]+) charts beyond the thresholds"
+   OR NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2)
+  string(APPEND failures "--max-stretch 0.5: exit code ${code}, summary '${summary}'\n")
+endif()
 execute_process(COMMAND "${PROGRAM}" "${MESH}" --quiet --out-dir "${WORK_DIR}/out" --size 15cm --notches 2cm ${allowance}
                 RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
 if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/out/report.json")
@@ -158,6 +165,9 @@ else()
   string(JSON first_onto GET "${report}" assembly 0 onto)
   if(NOT steps EQUAL charts OR NOT first EQUAL first_onto)
     string(APPEND failures "report.json: ${steps} assembly steps for ${charts} pieces\n")
+  endif()
+  if(summary MATCHES "beyond bounds")
+    string(APPEND failures "the summary has charts beyond the thresholds at the defaults: ${summary}\n")
   endif()
   if(NOT summary MATCHES "assembly       1\\. piece [0-9]+ \\(the largest\\)")
     string(APPEND failures "the summary has no assembly order: ${summary}\n")
