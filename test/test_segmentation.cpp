@@ -2821,6 +2821,12 @@ BOOST_AUTO_TEST_CASE(cut_shortening_rejects_bad_input)
   BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f,
                                     QD::parameters::area_preservation(2.))
                  .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f,
+                                    QD::parameters::max_local_area_distortion(-0.01))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
+  BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f,
+                                    QD::parameters::max_l2_stretch(std::nan("")))
+                 .status == QD::Error_code::INVALID_ARGUMENT);
   // invalid coordinates
   tm.point(*vertices(tm).begin()) = Surface_mesh::Point(std::nan(""), 0, 0);
   BOOST_TEST(QD::shorten_chart_cuts(tm, boost::make_assoc_property_map(chart), f).status ==
