@@ -122,6 +122,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                            {"cut_length", number(c.cut_length)},
                            {"cut_length_closed", number(c.cut_length_closed)},
                            {"trials", c.trials},
+                           {"flattenings", c.flattenings},
                            {"time_ms", number(c.time_ms)}};
   }
   if(patterns.result) {

@@ -53,6 +53,9 @@ struct Cut_shortening_result
   double cut_length = 0;           ///< the length of the input's cuts
   double cut_length_closed = 0;    ///< the length closed (when `kept`)
   std::size_t trials = 0;          ///< charts flattened and measured to decide
+  /// the flattenings after the trials: one, and one more each time the cuts of charts that then
+  /// failed were put back
+  std::size_t flattenings = 0;
   /// the flattening of the charts with the shortened cuts, when `kept`
   Chart_flattening_result<TriangleMesh> flattening;
   double time_ms = 0;
@@ -78,9 +81,8 @@ struct Cut_shortening_result
 /// loose end is closed whole or not at all. The charts do not change. Then
 /// the charts with shortened cuts are flattened again as `flatten_charts()`
 /// does, and the charts next to them start from their flattenings in
-/// `segmentation`; the two sides of their seams are fitted to a common length
-/// (where that fails, the charts next to them are flattened again too, and
-/// fitted again). Every other chart keeps its flattening from `segmentation`,
+/// `segmentation`; the two sides of their seams are fitted to a common length.
+/// Every other chart keeps its flattening from `segmentation`,
 /// and the sides of its seams are the lengths its neighbours fit to (a
 /// flattening made afresh need not match the seams an earlier one matched:
 /// seams just within 0.5 % can flip). The cuts of a chart that is then
@@ -193,16 +195,14 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
 
   // the charts shortened flattened again with the cuts left, and their
   // neighbours fitted to them; where a chart shortened is then rejected or
-  // overlaps, or a seam of it stops matching in length, the neighbours are
-  // flattened again too, and if that fails as well, its cuts are put back as
-  // they were, and the charts flattened again
+  // overlaps, or a seam of it stops matching in length, its cuts are put
+  // back as they were, and the charts flattened again
   const std::size_t unmatched_before = segmentation.number_of_seam_curves - segmentation.seam_curves_matched;
   auto unmatched_before_too = [&](const std::pair<std::size_t, std::size_t>& pair) {
     return std::find(segmentation.unmatched_seams.begin(), segmentation.unmatched_seams.end(), pair) !=
            segmentation.unmatched_seams.end();
   };
   Chart_flattening_result<TriangleMesh>& f = result.flattening;
-  bool with_neighbours_too = false;
   while(std::find(shortened.begin(), shortened.end(), 1) != shortened.end()) {
     std::vector<edge_descriptor> seams;
     for(edge_descriptor e : edges(tm))
@@ -219,17 +219,17 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
       return out;
     };
     // the charts shortened are flattened again, and their neighbours fitted
-    // from their flattenings (or, on the second try, flattened again too);
-    // the others keep their flattening
+    // from their flattenings; the others keep their flattening
     const std::vector<char> near = with_neighbours(shortened);
     std::vector<char> frozen(n, 1);
     for(std::size_t k = 0; k < n; ++k)
-      if(near[k]) frozen[k] = shortened[k] || with_neighbours_too ? 0 : 2;
+      if(near[k]) frozen[k] = shortened[k] ? 0 : 2;
     f = Chart_flattening_result<TriangleMesh>();
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
                                                    std::function<void(const char*, double)>(), f, nullptr, false,
                                                    evaluator.orderings(), &frozen, &segmentation);
+    ++result.flattenings;
     if(!f) {
       result.status = f.status;
       break;
@@ -239,11 +239,6 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
       result.kept = true;
       break;
     }
-    if(!with_neighbours_too) {
-      with_neighbours_too = true;
-      continue;
-    }
-    with_neighbours_too = false;
     std::vector<char> restore(n, 0);
     for(std::size_t k = 0; k < n; ++k)
       if(!f.charts[k].accepted || f.charts[k].overlap) restore[k] = 1;
