@@ -51,6 +51,15 @@ namespace internal {
 inline constexpr std::size_t seam_pull_rounds = 6;
 inline constexpr double seam_pull_weight = 30.;
 
+// What `flatten_final_charts()` does with a chart, given a flattening of the
+// same charts before (`before`): by chart, in a vector of `char`.
+enum Chart_kept_as_before : char {
+  FLATTEN_AGAIN = 0,  // flattened again, and fitted with the others
+  KEEP_AS_BEFORE = 1, // its flattening and report from `before`, never fitted: the sides of its seams are the
+                      // lengths its neighbours fit to
+  FIT_FROM_BEFORE = 2 // its flattening from `before` as the start of its fit with the others
+};
+
 // the 3D length of the edges `seams`, with the points `points` by vertex index
 template <class TriangleMesh, class VIM>
 double seam_length_of(const TriangleMesh& tm,
@@ -70,11 +79,9 @@ double seam_length_of(const TriangleMesh& tm,
 // along `seams`, and fills the chart and seam fields of `result` (whose
 // `points` hold the points by vertex index). With `fit_only_if_accepted`, the
 // seams are fitted to common lengths only when every chart is accepted. With
-// `frozen` (by chart) and `before` (a flattening of the same charts), a chart
-// marked 1 keeps its flattening and report from `before` and is never fitted:
-// the sides of its seams are the lengths its neighbours fit to; a chart marked
-// 2 starts from its flattening in `before` instead of being flattened again,
-// and is fitted with the others.
+// `frozen` (by chart, `Chart_kept_as_before`) and `before` (a flattening of
+// the same charts), a chart is flattened again, kept as in `before`, or
+// fitted from its flattening in `before`.
 template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
 void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, const VIM& vim, const HIM& him,
                           const std::vector<std::size_t>& chart, std::size_t n,
@@ -138,8 +145,8 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   std::vector<std::size_t> size(n);
   for(std::size_t k = 0; k < n; ++k) size[k] = members[k].size();
   const std::vector<std::size_t> largest_first = dearest_first(size);
-  auto is_frozen = [&](std::size_t k) { return frozen && before && (*frozen)[k] == 1; };
-  auto kept_as_before = [&](std::size_t k) { return frozen && before && (*frozen)[k] != 0; };
+  auto is_frozen = [&](std::size_t k) { return frozen && before && (*frozen)[k] == KEEP_AS_BEFORE; };
+  auto kept_as_before = [&](std::size_t k) { return frozen && before && (*frozen)[k] != FLATTEN_AGAIN; };
   for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     const std::size_t k = largest_first[i];
     if(members[k].empty()) return;

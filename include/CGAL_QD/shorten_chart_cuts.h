@@ -221,9 +221,9 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     // the charts shortened are flattened again, and their neighbours fitted
     // from their flattenings; the others keep their flattening
     const std::vector<char> near = with_neighbours(shortened);
-    std::vector<char> frozen(n, 1);
+    std::vector<char> frozen(n, internal::KEEP_AS_BEFORE);
     for(std::size_t k = 0; k < n; ++k)
-      if(near[k]) frozen[k] = shortened[k] ? 0 : 2;
+      if(near[k]) frozen[k] = shortened[k] ? internal::FLATTEN_AGAIN : internal::FIT_FROM_BEFORE;
     f = Chart_flattening_result<TriangleMesh>();
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
