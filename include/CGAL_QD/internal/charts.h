@@ -40,6 +40,16 @@ std::size_t read_charts(const TriangleMesh& tm, const FaceChartMap& face_chart, 
   return ids.size();
 }
 
+// the face indices in the order of `faces(tm)`
+template <class TriangleMesh, class FIM>
+std::vector<std::size_t> faces_in_order(const TriangleMesh& tm, const FIM& fim)
+{
+  std::vector<std::size_t> order;
+  order.reserve(num_faces(tm));
+  for(auto f : faces(tm)) order.push_back(get(fim, f));
+  return order;
+}
+
 // the faces across the edges of every face (by face index), in the order of
 // `faces_around_face()`; `std::size_t(-1)` across a border
 template <class TriangleMesh, class FIM>

@@ -33,16 +33,6 @@
 namespace CGAL_QD {
 namespace internal {
 
-// the face indices in the order of `faces(tm)`
-template <class TriangleMesh, class FIM>
-std::vector<std::size_t> faces_in_order(const TriangleMesh& tm, const FIM& fim)
-{
-  std::vector<std::size_t> order;
-  order.reserve(num_faces(tm));
-  for(auto f : faces(tm)) order.push_back(get(fim, f));
-  return order;
-}
-
 class Normal_vsa
 {
 public:
