@@ -2791,11 +2791,11 @@ BOOST_AUTO_TEST_CASE(fandisk_darts_are_shortened_from_their_loose_ends)
 }
 
 // elephant at a quarter of its faces (written with 17 digits and read back),
-// segmented and its seams smoothed as segment_mesh does: the first flattening after the trials leaves seams
-// unmatched that matched before, so the cuts of the pieces along them go back
-// and the pieces are flattened again; what is kept has every piece within
-// the thresholds, no more seams unmatched than before, and the cuts that did
-// not go back
+// segmented and its seams smoothed as segment_mesh does: the first
+// flattening after the trials leaves seams unmatched that matched before, so
+// the cuts of the pieces along them go back and the pieces are flattened
+// again; what is kept has every piece within the thresholds, no more seams
+// unmatched than before, and the cuts that did not go back
 BOOST_AUTO_TEST_CASE(failing_pieces_get_their_cuts_back)
 {
   // through an OFF file, as segment_mesh reads it (which numbers its halfedges anew)
@@ -2818,9 +2818,11 @@ BOOST_AUTO_TEST_CASE(failing_pieces_get_their_cuts_back)
   BOOST_REQUIRE(seg.rejected_charts == 0u);
   const auto s = QD::shorten_chart_cuts(out, boost::make_assoc_property_map(out_chart), seg);
   BOOST_REQUIRE(s);
-  BOOST_TEST_MESSAGE("elephant at a quarter: " << num_faces(tm) << " faces, " << r.number_of_charts << " charts, " << smoothed.smoothing.curves_smoothed << " curves smoothed in " << smoothed.tries << " tries, " << s.cut_curves << " cuts, " << s.cuts_passing_trials << " cuts pass their trials, "
-                                               << s.cuts_shortened << " kept after " << s.flattenings
-                                               << " flattenings");
+  BOOST_TEST_MESSAGE("elephant at a quarter: " << num_faces(tm) << " faces, " << r.number_of_charts << " charts, "
+                                               << smoothed.smoothing.curves_smoothed << " curves smoothed in "
+                                               << smoothed.tries << " tries; " << s.cut_curves << " cuts, "
+                                               << s.cuts_passing_trials << " pass their trials, " << s.cuts_shortened
+                                               << " kept after " << s.flattenings << " flattenings");
   BOOST_TEST(s.flattenings >= 2u);
   BOOST_TEST(s.kept);
   BOOST_TEST(s.cuts_shortened >= 1u);
@@ -2830,7 +2832,7 @@ BOOST_AUTO_TEST_CASE(failing_pieces_get_their_cuts_back)
   BOOST_TEST(f.overlapping_charts == 0u);
   BOOST_TEST(f.number_of_seam_curves - f.seam_curves_matched <= seg.number_of_seam_curves - seg.seam_curves_matched);
   BOOST_TEST(f.seam_length == seg.seam_length - s.cut_length_closed, tt::tolerance(1e-9));
-  // the edges closed are cuts of the input, and the cuts put back are there again
+  // the seams left are the input's but for the edges closed
   const std::set<Series_mesh::Edge_index> before(seg.seam_edges.begin(), seg.seam_edges.end());
   for(auto e : f.seam_edges) BOOST_TEST(before.count(e) == 1u);
   BOOST_TEST(f.seam_edges.size() < seg.seam_edges.size());
