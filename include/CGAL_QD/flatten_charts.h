@@ -53,7 +53,7 @@ inline constexpr double seam_pull_weight = 30.;
 
 // What `flatten_final_charts()` does with a chart, given a flattening of the
 // same charts before (`before`): by chart, in a vector of `char`.
-enum Chart_kept_as_before : char {
+enum Flattening_from_before : char {
   FLATTEN_AGAIN = 0,  // flattened again, and fitted with the others
   KEEP_AS_BEFORE = 1, // its flattening and report from `before`, never fitted: the sides of its seams are the
                       // lengths its neighbours fit to
@@ -79,7 +79,7 @@ double seam_length_of(const TriangleMesh& tm,
 // along `seams`, and fills the chart and seam fields of `result` (whose
 // `points` hold the points by vertex index). With `fit_only_if_accepted`, the
 // seams are fitted to common lengths only when every chart is accepted. With
-// `frozen` (by chart, `Chart_kept_as_before`) and `before` (a flattening of
+// `frozen` (by chart, `Flattening_from_before`) and `before` (a flattening of
 // the same charts), a chart is flattened again, kept as in `before`, or
 // fitted from its flattening in `before`.
 template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
@@ -145,12 +145,12 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
   std::vector<std::size_t> size(n);
   for(std::size_t k = 0; k < n; ++k) size[k] = members[k].size();
   const std::vector<std::size_t> largest_first = dearest_first(size);
-  auto is_frozen = [&](std::size_t k) { return frozen && before && (*frozen)[k] == KEEP_AS_BEFORE; };
-  auto kept_as_before = [&](std::size_t k) { return frozen && before && (*frozen)[k] != FLATTEN_AGAIN; };
+  auto never_fitted = [&](std::size_t k) { return frozen && before && (*frozen)[k] == KEEP_AS_BEFORE; };
+  auto starts_from_before = [&](std::size_t k) { return frozen && before && (*frozen)[k] != FLATTEN_AGAIN; };
   for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     const std::size_t k = largest_first[i];
     if(members[k].empty()) return;
-    if(!kept_as_before(k)) {
+    if(!starts_from_before(k)) {
       result.charts[k] = evaluator.evaluate(members[k], seam, &uvs[k]);
       return;
     }
@@ -209,9 +209,9 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
         }
         const std::size_t a = chart[get(fim, face(curve.front(), tm))],
                           b = chart[get(fim, face(opposite(curve.front(), tm), tm))];
-        const double common = kept[a] || is_frozen(a)   ? side[0]
-                              : kept[b] || is_frozen(b) ? side[1]
-                                                        : (side[0] + side[1]) / 2;
+        const double common = kept[a] || never_fitted(a)   ? side[0]
+                              : kept[b] || never_fitted(b) ? side[1]
+                                                           : (side[0] + side[1]) / 2;
         if(std::abs(side[0] - side[1]) > matched_seam_tolerance * (std::max)(side[0], side[1])) {
           unmatched = true;
           on_unmatched[a] = on_unmatched[b] = 1;
@@ -233,7 +233,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
     auto fit = [&](double pull_weight, bool exact) {
       list.clear();
       for(std::size_t k : largest_first)
-        if(todo[k] && !kept[k] && !is_frozen(k) && result.charts[k].accepted) list.push_back(k);
+        if(todo[k] && !kept[k] && !never_fitted(k) && result.charts[k].accepted) list.push_back(k);
       fitted.assign(list.size(), Chart_report());
       fitted_uv.assign(list.size(), {});
       for_each_index<ConcurrencyTag>(list.size(), [&](std::size_t i) {
