@@ -45,6 +45,7 @@
 #include <random>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -2234,6 +2235,106 @@ BOOST_AUTO_TEST_CASE(rejected_trial_reports_its_optimised_map)
   BOOST_TEST(hopeless.local_area_distortion > 2.5 * std::pow(30. / 5., 0.6));
   BOOST_TEST(hopeless.area_distortion > 0.);
   BOOST_TEST(hopeless.l2_stretch == 0.);  // not measured
+}
+
+BOOST_AUTO_TEST_CASE(final_flattening_starts_from_the_remembered_trial)
+{
+  // a final flattening of a chart that a trial accepted starts from that
+  // trial's LPFB+IP and optimisation (internal/trial_memory.h) and gives the
+  // flattening made from scratch, to the last bit; rejected trials are not
+  // remembered, and neither are charts cut open differently
+  auto check = [](const Surface_mesh& tm, bool optimized_in_trial) {
+    const auto fim = CGAL::get_initialized_face_index_map(tm);
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    typedef QD::internal::Chart_evaluator<Surface_mesh, decltype(fim), decltype(vim)> Evaluator;
+    const std::vector<std::array<double, 3>> points = QD::internal::points_by_index(tm, get(CGAL::vertex_point, tm), vim);
+    QD::internal::Merge_thresholds thresholds, trial_thresholds;
+    trial_thresholds.max_local_area_distortion *= 0.95;  // as the merging tries a chart
+    Evaluator trials(tm, fim, vim, points, trial_thresholds), final(tm, fim, vim, points, thresholds),
+        fresh(tm, fim, vim, points, thresholds);
+    const auto memory = std::make_shared<QD::internal::Trial_memory>();
+    trials.set_trial_memory(memory);
+    final.set_trial_memory(memory);
+    const std::vector<Surface_mesh::Face_index> fs(faces(tm).begin(), faces(tm).end());
+    const auto no_cut = [](Surface_mesh::Halfedge_index) { return false; };
+    const QD::Chart_report trial = trials.evaluate(fs, no_cut);
+    BOOST_REQUIRE(trial.accepted);
+    BOOST_TEST(trial.optimized == optimized_in_trial);
+    BOOST_TEST(memory->size() == 1u);
+    std::vector<std::array<double, 2>> resumed_uv, fresh_uv;
+    const QD::Chart_report resumed = final.evaluate(fs, no_cut, &resumed_uv);
+    const QD::Chart_report made = fresh.evaluate(fs, no_cut, &fresh_uv);
+    BOOST_TEST(memory->hits() == 1u);
+    BOOST_TEST(resumed.accepted == made.accepted);
+    BOOST_TEST(resumed.optimized == made.optimized);
+    BOOST_TEST(resumed.number_of_border_loops == made.number_of_border_loops);
+    BOOST_TEST(resumed.area_distortion == made.area_distortion);
+    BOOST_TEST(resumed.l2_stretch == made.l2_stretch);
+    BOOST_TEST(resumed.local_area_distortion == made.local_area_distortion);
+    BOOST_REQUIRE(resumed_uv.size() == 3 * fs.size());
+    BOOST_TEST((resumed_uv == fresh_uv));
+    // the same chart cut along an edge from its border inwards, which splits
+    // the wedge of its border vertex: not the remembered trial
+    Surface_mesh::Halfedge_index cut;
+    for(auto h : halfedges(tm))
+      if(!is_border_edge(h, tm) && is_border(target(h, tm), tm) && !is_border(source(h, tm), tm)) cut = h;
+    BOOST_REQUIRE(cut != Surface_mesh::null_halfedge());
+    const auto one_cut = [&](Surface_mesh::Halfedge_index h) { return h == cut || h == opposite(cut, tm); };
+    std::vector<std::array<double, 2>> cut_uv;
+    final.evaluate(fs, one_cut, &cut_uv);
+    BOOST_TEST(memory->hits() == 1u);
+  };
+  // a cap that LPFB+IP flattens beyond A_loc 2.5 % and the trial's
+  // optimisation within it; the final flattening goes on from its 30
+  // iterations
+  check(make<Surface_mesh>(polar(8, 32, sphere_cap(0.6))), true);
+  // a flat disk, which LPFB+IP flattens within the thresholds: the trial runs
+  // no optimisation, and the final flattening runs it from LPFB+IP's map
+  check(make<Surface_mesh>(polar(6, 24, flat_disk(1.))), false);
+  // a trial rejected is not remembered
+  const Surface_mesh hemisphere = make<Surface_mesh>(polar(8, 32, sphere_cap(0.5 * CGAL_PI)));
+  const auto fim = CGAL::get_initialized_face_index_map(hemisphere);
+  const auto vim = CGAL::get_initialized_vertex_index_map(hemisphere);
+  const std::vector<std::array<double, 3>> points =
+      QD::internal::points_by_index(hemisphere, get(CGAL::vertex_point, hemisphere), vim);
+  QD::internal::Chart_evaluator<Surface_mesh, decltype(fim), decltype(vim)> evaluator(
+      hemisphere, fim, vim, points, QD::internal::Merge_thresholds());
+  evaluator.set_trial_memory(std::make_shared<QD::internal::Trial_memory>());
+  const std::vector<Surface_mesh::Face_index> fs(faces(hemisphere).begin(), faces(hemisphere).end());
+  BOOST_TEST(!evaluator.evaluate(fs, [](Surface_mesh::Halfedge_index) { return false; }).accepted);
+  BOOST_TEST(evaluator.trial_memory()->size() == 0u);
+#ifdef CGAL_QD_DEMO_MESH_DIR
+  // the final flattening of a segmentation, whose charts start from their
+  // last trials (most of which stop at their 30 iterations and go on from
+  // there), is the flattening of the same charts made from scratch
+  Surface_mesh elephant;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/elephant.off", elephant));
+  Face_map<Surface_mesh> chart;
+  const QD::Segmentation_result<Surface_mesh> seg =
+      QD::segment_quasi_developable(elephant, boost::make_assoc_property_map(chart));
+  BOOST_REQUIRE(seg);
+  // the same charts and seams flattened from scratch, as the segmentation's
+  // last step does (the seams in the same order: the order of a seam curve's
+  // edges is the order of the sums of its sides' lengths)
+  const auto efim = CGAL::get_initialized_face_index_map(elephant);
+  const auto evim = CGAL::get_initialized_vertex_index_map(elephant);
+  const auto ehim = CGAL::get_initialized_halfedge_index_map(elephant);
+  std::vector<std::size_t> chart_of(num_faces(elephant));
+  for(auto f : faces(elephant)) chart_of[get(efim, f)] = chart.at(f);
+  QD::Chart_flattening_result<Surface_mesh> again;
+  again.points = QD::internal::points_by_index(elephant, get(CGAL::vertex_point, elephant), evim);
+  QD::internal::flatten_final_charts<CGAL::Sequential_tag>(
+      elephant, get(CGAL::vertex_point, elephant), efim, evim, ehim, chart_of, seg.number_of_charts, seg.seam_edges,
+      QD::internal::Merge_thresholds(), std::function<void(const char*, double)>(), again);
+  BOOST_REQUIRE(again);
+  BOOST_TEST(again.number_of_charts == seg.number_of_charts);
+  BOOST_TEST((again.corner_uv == seg.corner_uv));
+  BOOST_TEST(again.seam_curves_matched == seg.seam_curves_matched);
+  for(std::size_t k = 0; k < seg.charts.size() && k < again.charts.size(); ++k) {
+    BOOST_TEST(again.charts[k].accepted == seg.charts[k].accepted);
+    BOOST_TEST(again.charts[k].local_area_distortion == seg.charts[k].local_area_distortion);
+  }
+#endif
 }
 
 BOOST_AUTO_TEST_CASE(flatten_charts_keeps_the_flattening_nearest_the_thresholds)

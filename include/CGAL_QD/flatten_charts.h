@@ -81,7 +81,8 @@ double seam_length_of(const TriangleMesh& tm,
 // seams are fitted to common lengths only when every chart is accepted. With
 // `frozen` (by chart, `Flattening_from_before`) and `before` (a flattening of
 // the same charts), a chart is flattened again, kept as in `before`, or
-// fitted from its flattening in `before`.
+// fitted from its flattening in `before`. A chart flattened again whose
+// trial is remembered in `trials` starts from it (trial_memory.h).
 template <class ConcurrencyTag, class TriangleMesh, class VPM, class FIM, class VIM, class HIM>
 void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim, const VIM& vim, const HIM& him,
                           const std::vector<std::size_t>& chart, std::size_t n,
@@ -91,7 +92,8 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
                           Flattening_cache<Chart_report>* cache = nullptr, bool fit_only_if_accepted = false,
                           std::shared_ptr<Ordering_cache> orderings = nullptr,
                           const std::vector<char>* frozen = nullptr,
-                          const Chart_flattening_result<TriangleMesh>* before = nullptr)
+                          const Chart_flattening_result<TriangleMesh>* before = nullptr,
+                          std::shared_ptr<Trial_memory> trials = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -130,6 +132,7 @@ void flatten_final_charts(const TriangleMesh& tm, const VPM& vpm, const FIM& fim
 
   Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, thresholds, std::move(orderings));
   evaluator.set_cache(cache);
+  evaluator.set_trial_memory(std::move(trials));
   std::vector<std::vector<face_descriptor>> members(n);
   for(face_descriptor f : faces(tm)) members[chart[get(fim, f)]].push_back(f);
   for(auto& m : members)

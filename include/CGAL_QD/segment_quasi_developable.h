@@ -37,6 +37,7 @@
 #include <functional>
 #include <set>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 namespace CGAL_QD {
@@ -216,6 +217,11 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   internal::Merge_thresholds trial_thresholds = thresholds;
   trial_thresholds.max_local_area_distortion *= 1. - internal::local_area_distortion_margin;
   internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, result.points, trial_thresholds);
+  // the final flattening (step 5) of a chart that a trial accepted starts
+  // from that trial (a scaled mesh is always flattened: see there)
+  const bool final_flattening =
+      choose_parameter(get_parameter(snp, internal_np::final_flattening_t()), true) || scale != 1.;
+  if(final_flattening) evaluator.set_trial_memory(std::make_shared<internal::Trial_memory>());
   internal::Boundary_merger<TriangleMesh, FIM, HIM, VIM> merger(tm, fim, him, evaluator, chart,
                                                                 result.charts_after_refinement, result.points, vim);
   result.merging.charts_before = result.charts_after_refinement;
@@ -266,12 +272,14 @@ Segmentation_result<TriangleMesh> segment_quasi_developable(const TriangleMesh& 
   // 5. the flattening of every final chart (always for a scaled mesh: a
   // flattening of the charts made later would see the points in the units of
   // the mesh)
-  if(choose_parameter(get_parameter(snp, internal_np::final_flattening_t()), true) || scale != 1.) {
-    // with the merging's orderings: a chart made by a merging trial is
-    // flattened again with the same pattern
+  if(final_flattening) {
+    // with the merging's orderings and trials: a chart made by a merging
+    // trial is flattened again with the same pattern, from that trial
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, result.number_of_charts,
                                                    result.merging.seam_edges, thresholds, progress, result,
-                                                   nullptr, false, evaluator.orderings());
+                                                   nullptr, false, evaluator.orderings(), nullptr,
+                                                   static_cast<const Chart_flattening_result<TriangleMesh>*>(nullptr),
+                                                   evaluator.trial_memory());
   } else {
     result.flattened = false;
     result.number_of_faces = nf;

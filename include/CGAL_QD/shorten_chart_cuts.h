@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -178,7 +179,10 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   // the cuts tried as the merging tries a chart, with its margin below the A_loc bound
   internal::Merge_thresholds trial_thresholds = thresholds;
   trial_thresholds.max_local_area_distortion *= 1. - internal::local_area_distortion_margin;
-  const internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points, trial_thresholds);
+  // the charts whose cuts are shortened are flattened again from their last
+  // accepted trial
+  internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points, trial_thresholds);
+  evaluator.set_trial_memory(std::make_shared<internal::Trial_memory>());
   const auto trial = [&](const std::vector<face_descriptor>& fs, const auto& is_cut) {
     return evaluator.evaluate(fs, is_cut, nullptr, nullptr, nullptr, 1000., true, nullptr).accepted;
   };
@@ -228,7 +232,8 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
                                                    std::function<void(const char*, double)>(), f, nullptr, false,
-                                                   evaluator.orderings(), &frozen, &segmentation);
+                                                   evaluator.orderings(), &frozen, &segmentation,
+                                                   evaluator.trial_memory());
     ++result.flattenings;
     if(!f) {
       result.status = f.status;

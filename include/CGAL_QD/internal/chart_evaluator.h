@@ -20,6 +20,7 @@
 #include <CGAL_QD/internal/fit_chart_to_lengths.h>
 #include <CGAL_QD/internal/flattening_cache.h>
 #include <CGAL_QD/internal/hopeless_trial.h>
+#include <CGAL_QD/internal/trial_memory.h>
 
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -109,9 +110,7 @@ public:
     const std::uint64_t modes[] = {std::uint64_t(m_thresholds.criterion), std::uint64_t(m_thresholds.arap_border)};
     digest.add(t, sizeof(t));
     digest.add(modes, sizeof(modes));
-    digest.add_vector(wedges.wedge_of_corner);
-    for(std::size_t w = 0; w < wedges.size(); ++w)
-      digest.add(m_points[get(m_vim, wedges.vertex_of_wedge[w])].data(), 3 * sizeof(double));
+    add_chart(wedges, digest);
     if(border_target) digest.add_vector(*border_target);
     if(start_uv) digest.add_vector(*start_uv);
     const auto key = digest.value();
@@ -139,6 +138,12 @@ public:
 
   // flattenings are looked up in `cache` (and stored there) from now on; nullptr: none
   void set_cache(Flattening_cache<Chart_report>* cache) { m_cache = cache; }
+
+  // accepted trials are remembered in `trials`, and a final flattening of a
+  // chart remembered there starts from its trial (the same map, to the last
+  // bit); nullptr: none. Shared with the evaluator of the final flattening.
+  void set_trial_memory(std::shared_ptr<Trial_memory> trials) { m_trials = std::move(trials); }
+  const std::shared_ptr<Trial_memory>& trial_memory() const { return m_trials; }
 
 private:
   // the chart of `n_faces` faces cut open into `wedges`, flattened and measured
@@ -177,18 +182,28 @@ private:
       return rep;
     }
     if(stopped(stop)) return rep;
-    // SimplicialLDLT, not the default's supernodal factorisation for large
-    // charts: the charts are flattened on the threads of the segmentation's
-    // parallel loops, where BLAS threads and the analysis thread of the
-    // supernodal path would compete with them (bunny00 subdivided twice,
-    // 1.2M faces: merging 56.4 s with SimplicialLDLT, 67.5 s with the default)
-    const Flattening_result flat = flatten_patch(sm, uv, parameters::sparse_solver(solver()));
-    rep.number_of_border_loops = flat.border.number_of_loops;
-    if(!flat) {
-      rep.status = flat.status;
-      if(flat.status == Error_code::NOT_CONVERGED) ++m_not_converged;
-      return rep;
+    // a final flattening of a chart that a trial accepted starts from that
+    // trial's LPFB+IP and optimisation (trial_memory.h)
+    Trial_start resumed;
+    const bool resume = corner_uv && m_trials && m_trials->find(trial_key(wedges), resumed);
+    if(resume) {
+      for(auto v : vertices(sm)) put(uv, v, K::Point_2(resumed.lpfb_ip[v][0], resumed.lpfb_ip[v][1]));
+      rep.number_of_border_loops = resumed.border_loops;
+    } else {
+      // SimplicialLDLT, not the default's supernodal factorisation for large
+      // charts: the charts are flattened on the threads of the segmentation's
+      // parallel loops, where BLAS threads and the analysis thread of the
+      // supernodal path would compete with them (bunny00 subdivided twice,
+      // 1.2M faces: merging 56.4 s with SimplicialLDLT, 67.5 s with the default)
+      const Flattening_result flat = flatten_patch(sm, uv, parameters::sparse_solver(solver()));
+      rep.number_of_border_loops = flat.border.number_of_loops;
+      if(!flat) {
+        rep.status = flat.status;
+        if(flat.status == Error_code::NOT_CONVERGED) ++m_not_converged;
+        return rep;
+      }
     }
+    const auto lpfb_ip_uv = uv;  // LPFB+IP's map: a trial writes no other into it
     if(!measure(sm, uv, rep)) return rep;
     const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
     // an optimised flattening `map` replaces the flattening of `rep` when it is
@@ -216,6 +231,8 @@ private:
     };
     auto last = uv;       // the latest optimisation started from LPFB+IP
     bool capped = false;  // whether it stopped at its iteration cap
+    Optimization_result trial_optimization;  // a trial's, where it ran one
+    bool trial_optimized = false;
     // a final flattening with area-preserving targets that is not accepted
     // also tries plain ARAP from LPFB+IP: those targets take a chart that
     // develops onto the plane towards its isometric unfolding only slowly (the
@@ -229,7 +246,10 @@ private:
       auto opt = sm.template add_property_map<typename Mesh::Vertex_index, K::Point_2>("v:opt", K::Point_2(0, 0)).first;
       for(auto v : vertices(sm)) put(opt, v, get(uv, v));
       Optimization_result o;
-      if(corner_uv) {
+      if(corner_uv && resume && !resumed.optimized.empty()) {
+        for(auto v : vertices(sm)) put(opt, v, K::Point_2(resumed.optimized[v][0], resumed.optimized[v][1]));
+        o = resumed.optimization;
+      } else if(corner_uv) {
         o = optimize_flattening(sm, opt, trial_parameters());
       } else {
         // a trial gives up where its A_loc is too far above the bound to come
@@ -249,6 +269,8 @@ private:
           }
           return rep;
         }
+        trial_optimization = o;
+        trial_optimized = true;
       }
       last = opt;
       capped = o && o.iterations == 30;
@@ -273,7 +295,41 @@ private:
     if(!paper && corner_uv && !rep.accepted)
       go_on_from_the_cap_and_lscm(sm, uv, last, capped, rep.number_of_border_loops, better);
     write_corner_uv();
+    if(!corner_uv && m_trials && rep.accepted && !stopped(stop)) {
+      Trial_start start;
+      start.border_loops = rep.number_of_border_loops;
+      start.lpfb_ip.resize(num_vertices(sm));
+      if(trial_optimized) start.optimized.resize(num_vertices(sm));
+      for(auto v : vertices(sm)) {
+        start.lpfb_ip[v] = {get(lpfb_ip_uv, v).x(), get(lpfb_ip_uv, v).y()};
+        if(trial_optimized) start.optimized[v] = {get(last, v).x(), get(last, v).y()};
+      }
+      start.optimization = trial_optimization;
+      m_trials->store(trial_key(wedges), std::move(start));
+    }
     return rep;
+  }
+
+  // the key of a chart cut open into `wedges` (in AMD order) in the trial
+  // memory: the chart and the options of its flattening
+  Trial_memory::Key trial_key(const Wedges<TriangleMesh>& wedges) const
+  {
+    Digest digest;
+    const double options[] = {m_thresholds.area_preservation, m_thresholds.border_length_weight};
+    const std::uint64_t modes[] = {std::uint64_t(m_thresholds.criterion), std::uint64_t(m_thresholds.arap_border)};
+    digest.add(options, sizeof(options));
+    digest.add(modes, sizeof(modes));
+    add_chart(wedges, digest);
+    return digest.value();
+  }
+
+  // the chart cut open into `wedges` added to `digest`: the wedges of its
+  // corners and the points of its wedges
+  void add_chart(const Wedges<TriangleMesh>& wedges, Digest& digest) const
+  {
+    digest.add_vector(wedges.wedge_of_corner);
+    for(std::size_t w = 0; w < wedges.size(); ++w)
+      digest.add(m_points[get(m_vim, wedges.vertex_of_wedge[w])].data(), 3 * sizeof(double));
   }
 
   // A final flattening still outside the thresholds: the optimisation
@@ -392,6 +448,7 @@ private:
   mutable std::mutex m_scratch_mutex;
   mutable std::vector<std::unique_ptr<std::vector<long>>> m_scratch;  // one per trial run at the same time
   Flattening_cache<Chart_report>* m_cache = nullptr;
+  std::shared_ptr<Trial_memory> m_trials;
   // the AMD orderings of the graphs of the charts it flattened: a chart
   // flattened again (the final flattening of a chart its last merging trial
   // made, the fits of its seams) takes its ordering from there
