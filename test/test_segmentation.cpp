@@ -2314,8 +2314,8 @@ BOOST_AUTO_TEST_CASE(final_flattening_starts_from_the_remembered_trial)
       QD::segment_quasi_developable(elephant, boost::make_assoc_property_map(chart));
   BOOST_REQUIRE(seg);
   // the same charts and seams flattened from scratch, as the segmentation's
-  // last step does (the seams in the same order: the order of a seam curve's
-  // edges is the order of the sums of its sides' lengths)
+  // last step does (the seams in the same order: it sets the order in which
+  // the lengths along the two sides of each seam curve are summed)
   const auto efim = CGAL::get_initialized_face_index_map(elephant);
   const auto evim = CGAL::get_initialized_vertex_index_map(elephant);
   const auto ehim = CGAL::get_initialized_halfedge_index_map(elephant);
