@@ -13,13 +13,11 @@
 #include <Eigen/OrderingMethods>
 
 #include <CGAL_QD/internal/digest.h>
+#include <CGAL_QD/internal/lru_by_bytes.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <list>
-#include <map>
-#include <mutex>
 #include <type_traits>
 #include <utility>
 
@@ -42,7 +40,7 @@ public:
   typedef std::pair<std::uint64_t, std::uint64_t> Key;
   static constexpr std::size_t default_max_bytes = std::size_t(16) << 20;
 
-  explicit Ordering_cache(std::size_t max_bytes = default_max_bytes) : m_max_bytes(max_bytes) {}
+  explicit Ordering_cache(std::size_t max_bytes = default_max_bytes) : m_store(max_bytes, &bytes_of) {}
 
   /// the key of the pattern of `C`; false if `C` is not in compressed storage
   static bool key_of(const Eigen::SparseMatrix<double>& C, Key& key)
@@ -60,56 +58,25 @@ public:
   /// the permutation stored for `key`, if any, into `p`
   bool find(const Key& key, Permutation& p)
   {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    const auto it = m_index.find(key);
-    if(it == m_index.end()) {
-      ++m_misses;
-      return false;
-    }
-    m_used.splice(m_used.begin(), m_used, it->second);  // now the most recent
-    p.indices() = it->second->indices;
-    ++m_hits;
+    Eigen::VectorXi indices;
+    if(!m_store.find(key, indices)) return false;
+    p.indices() = std::move(indices);
     return true;
   }
 
   /// stores `p` for `key`, dropping the least recently used beyond `max_bytes`
-  void store(const Key& key, const Permutation& p)
-  {
-    const std::size_t bytes = sizeof(int) * static_cast<std::size_t>(p.size());
-    std::lock_guard<std::mutex> lock(m_mutex);
-    if(bytes > m_max_bytes || m_index.count(key)) return;
-    m_used.push_front(Entry{key, p.indices()});
-    m_index[key] = m_used.begin();
-    m_bytes += bytes;
-    while(m_bytes > m_max_bytes) {
-      m_bytes -= sizeof(int) * static_cast<std::size_t>(m_used.back().indices.size());
-      m_index.erase(m_used.back().key);
-      m_used.pop_back();
-    }
-  }
+  void store(const Key& key, const Permutation& p) { m_store.store(key, Eigen::VectorXi(p.indices())); }
 
   /// orderings found, and not found
-  std::size_t hits() const
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_hits;
-  }
-  std::size_t misses() const
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_misses;
-  }
+  std::size_t hits() const { return m_store.hits(); }
+  std::size_t misses() const { return m_store.misses(); }
 
 private:
-  struct Entry
+  static std::size_t bytes_of(const Eigen::VectorXi& indices)
   {
-    Key key;
-    Eigen::VectorXi indices;
-  };
-  mutable std::mutex m_mutex;
-  std::list<Entry> m_used;  // the most recently used first
-  std::map<Key, std::list<Entry>::iterator> m_index;
-  std::size_t m_max_bytes, m_bytes = 0, m_hits = 0, m_misses = 0;
+    return sizeof(int) * static_cast<std::size_t>(indices.size());
+  }
+  internal::Lru_by_bytes<Eigen::VectorXi> m_store;
 };
 
 namespace internal {

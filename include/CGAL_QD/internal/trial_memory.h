@@ -15,14 +15,10 @@
 // trials are kept.
 
 #include <CGAL_QD/optimize_flattening.h>
-#include <CGAL_QD/internal/digest.h>
+#include <CGAL_QD/internal/lru_by_bytes.h>
 
 #include <array>
 #include <cstddef>
-#include <cstdint>
-#include <list>
-#include <map>
-#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -50,59 +46,19 @@ struct Trial_start
 class Trial_memory
 {
 public:
-  typedef std::pair<std::uint64_t, std::uint64_t> Key;
+  typedef Lru_by_bytes<Trial_start>::Key Key;
   static constexpr std::size_t default_max_bytes = std::size_t(32) << 20;
 
-  explicit Trial_memory(std::size_t max_bytes = default_max_bytes) : m_max_bytes(max_bytes) {}
+  explicit Trial_memory(std::size_t max_bytes = default_max_bytes) : m_store(max_bytes, &bytes_of) {}
 
-  bool find(const Key& key, Trial_start& start)
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    const auto it = m_index.find(key);
-    if(it == m_index.end()) return false;
-    m_used.splice(m_used.begin(), m_used, it->second);  // now the most recent
-    start = it->second->start;
-    ++m_hits;
-    return true;
-  }
-
-  void store(const Key& key, Trial_start&& start)
-  {
-    const std::size_t bytes = start.bytes();
-    std::lock_guard<std::mutex> lock(m_mutex);
-    if(bytes > m_max_bytes || m_index.count(key)) return;
-    m_used.push_front(Entry{key, std::move(start)});
-    m_index[key] = m_used.begin();
-    m_bytes += bytes;
-    while(m_bytes > m_max_bytes) {
-      m_bytes -= m_used.back().start.bytes();
-      m_index.erase(m_used.back().key);
-      m_used.pop_back();
-    }
-  }
-
-  std::size_t hits() const
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_hits;
-  }
-
-  std::size_t size() const
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_index.size();
-  }
+  bool find(const Key& key, Trial_start& start) { return m_store.find(key, start); }
+  void store(const Key& key, Trial_start&& start) { m_store.store(key, std::move(start)); }
+  std::size_t hits() const { return m_store.hits(); }
+  std::size_t size() const { return m_store.size(); }
 
 private:
-  struct Entry
-  {
-    Key key;
-    Trial_start start;
-  };
-  mutable std::mutex m_mutex;
-  std::list<Entry> m_used;  // the most recently used first
-  std::map<Key, std::list<Entry>::iterator> m_index;
-  std::size_t m_max_bytes, m_bytes = 0, m_hits = 0;
+  static std::size_t bytes_of(const Trial_start& start) { return start.bytes(); }
+  Lru_by_bytes<Trial_start> m_store;
 };
 
 } // namespace internal
