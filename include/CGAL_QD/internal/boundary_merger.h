@@ -12,6 +12,7 @@
 #include <CGAL_QD/chart_criterion.h>
 #include <CGAL_QD/merge_order.h>
 #include <CGAL_QD/internal/chart_bisection.h>
+#include <CGAL_QD/internal/chart_border_curves.h>
 #include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/charts.h>
 #include <CGAL_QD/internal/parallel.h>
@@ -54,11 +55,9 @@ public:
   typedef Chart_evaluator<TriangleMesh, FIM, VIM> Evaluator;
   typedef std::function<void(const char*, double)> Progress;
 
-  struct Curve
+  // a curve between two initial charts
+  struct Curve : Chart_border_curve<halfedge_descriptor>
   {
-    std::size_t a, b;  // initial charts on either side, a < b
-    std::vector<halfedge_descriptor> halfedges;  // one per edge, in a face of chart a
-    double length = 0;
     bool eliminated = false;
     bool active = true;  // in the heap, or to be tried again when a side changes
   };
@@ -106,47 +105,14 @@ public:
 
   void build_curves()
   {
-    m_curve_of.assign(num_halfedges(m_tm), -1);
+    std::vector<Chart_border_curve<halfedge_descriptor>> found = chart_border_curves(
+        m_tm, m_him, [&](halfedge_descriptor h) { return chart_of(h); },
+        [&](halfedge_descriptor h) {
+          return distance3(m_points[get(m_vim, source(h, m_tm))], m_points[get(m_vim, target(h, m_tm))]);
+        },
+        m_curve_of);
     m_curves.clear();
-    // group the border edges of each pair of charts into connected chains:
-    // edges of the same pair that share a vertex are in the same curve
-    std::vector<halfedge_descriptor> border;
-    for(auto e : edges(m_tm)) {
-      const halfedge_descriptor h = halfedge(e, m_tm);
-      if(is_border_edge(h, m_tm)) continue;
-      if(chart_of(h) != chart_of(opposite(h, m_tm))) border.push_back(h);
-    }
-    Union_find chains(border.size());
-    auto pair_of = [&](halfedge_descriptor h) {
-      const std::size_t x = chart_of(h), y = chart_of(opposite(h, m_tm));
-      return std::make_pair((std::min)(x, y), (std::max)(x, y));
-    };
-    std::vector<long> edge_at(num_halfedges(m_tm), -1);  // border edge index by halfedge
-    for(std::size_t i = 0; i < border.size(); ++i) {
-      edge_at[get(m_him, border[i])] = static_cast<long>(i);
-      edge_at[get(m_him, opposite(border[i], m_tm))] = static_cast<long>(i);
-    }
-    for(std::size_t i = 0; i < border.size(); ++i)
-      for(halfedge_descriptor end : {border[i], opposite(border[i], m_tm)})
-        for(halfedge_descriptor h : CGAL::halfedges_around_target(end, m_tm)) {
-          const long j = edge_at[get(m_him, h)];
-          if(j < 0 || std::size_t(j) == i || pair_of(border[j]) != pair_of(border[i])) continue;
-          chains.unite(i, std::size_t(j));
-        }
-    std::vector<long> curve_of_root(border.size(), -1);
-    for(std::size_t i = 0; i < border.size(); ++i) {
-      const std::size_t r = chains.find(i);
-      if(curve_of_root[r] < 0) {
-        curve_of_root[r] = static_cast<long>(m_curves.size());
-        Curve c;
-        std::tie(c.a, c.b) = pair_of(border[i]);
-        m_curves.push_back(c);
-      }
-      Curve& c = m_curves[curve_of_root[r]];
-      c.halfedges.push_back(chart_of(border[i]) == c.a ? border[i] : opposite(border[i], m_tm));
-      c.length += distance3(m_points[get(m_vim, source(border[i], m_tm))], m_points[get(m_vim, target(border[i], m_tm))]);
-      m_curve_of[get(m_him, border[i])] = m_curve_of[get(m_him, opposite(border[i], m_tm))] = curve_of_root[r];
-    }
+    for(Chart_border_curve<halfedge_descriptor>& c : found) m_curves.push_back(Curve{std::move(c)});
     m_curves_of_chart.assign(m_n, {});
     for(std::size_t c = 0; c < m_curves.size(); ++c) {
       m_curves_of_chart[m_curves[c].a].push_back(c);

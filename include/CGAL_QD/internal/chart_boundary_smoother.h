@@ -482,22 +482,6 @@ private:
   std::map<Label, Labelled_topology> m_topology;
 };
 
-// the edges between two charts, and the constrained edges
-template <class TriangleMesh, class FaceChartMap, class ECM>
-std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor> chart_seams(const TriangleMesh& tm,
-                                                                                     const FaceChartMap& chart,
-                                                                                     const ECM& ecm)
-{
-  std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor> seams;
-  for(auto e : edges(tm)) {
-    const auto h = halfedge(e, tm);
-    if(get(ecm, e) ||
-       (!is_border_edge(h, tm) && get(chart, face(h, tm)) != get(chart, face(opposite(h, tm), tm))))
-      seams.push_back(e);
-  }
-  return seams;
-}
-
 } // namespace internal
 } // namespace CGAL_QD
 

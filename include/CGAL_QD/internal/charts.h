@@ -4,8 +4,9 @@
 #ifndef CGAL_QD_INTERNAL_CHARTS_H
 #define CGAL_QD_INTERNAL_CHARTS_H
 
-// Charts of a segmentation held as a vector of compact ids by face index, and
-// the per-face geometry the segmentation steps share.
+// Charts of a segmentation held as a vector of compact ids by face index; the
+// per-face geometry the segmentation steps share; the seams between charts
+// given by a property map.
 
 #include <CGAL_QD/internal/validation.h>
 
@@ -187,6 +188,22 @@ std::vector<std::array<double, 3>> points_by_index(const TriangleMesh& tm, const
   std::vector<std::array<double, 3>> points(num_vertices(tm));
   for(auto v : vertices(tm)) points[get(vim, v)] = point_of<TriangleMesh>(v, vpm);
   return points;
+}
+
+// the edges between two charts, and the constrained edges
+template <class TriangleMesh, class FaceChartMap, class ECM>
+std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor> chart_seams(const TriangleMesh& tm,
+                                                                                     const FaceChartMap& chart,
+                                                                                     const ECM& ecm)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor> seams;
+  for(auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    if(get(ecm, e) ||
+       (!is_border_edge(h, tm) && get(chart, face(h, tm)) != get(chart, face(opposite(h, tm), tm))))
+      seams.push_back(e);
+  }
+  return seams;
 }
 
 } // namespace internal
