@@ -26,6 +26,7 @@
 #include <CGAL_QD/vsa_segmentation.h>
 #include <CGAL_QD/boundary_refinement.h>
 #include <CGAL_QD/internal/bucket_queue.h>
+#include <CGAL_QD/internal/chart_border_curves.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -1783,6 +1784,64 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(borders_between_charts_and_slits, Mesh, Mesh_types
   BOOST_TEST(c.perimeter[1] == 4.0, tt::tolerance(1e-12));
   BOOST_TEST(c.chart_compactness[0] == 4 * pi / 25, tt::tolerance(1e-12));
   BOOST_TEST(c.compactness == (4 * pi / 25 + pi / 4) / 2, tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(border_curves_are_the_connected_chains_between_two_charts, Mesh, Mesh_types)
+{
+  // a 3 x 1 rectangle: chart 0 on both outer thirds, the middle third cut in
+  // chart 1 below y = 1/2 and chart 2 above. Charts 0 and 1 meet along two
+  // separate segments (x = 1 and x = 2, below the middle), as do 0 and 2
+  // above it; 1 and 2 along y = 1/2.
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t n = 8;
+  const Mesh tm = make<Mesh>(flat_grid(3 * n, n, 3., 1.));
+  Face_map<Mesh> chart;
+  for(auto f : faces(tm)) {
+    double c[2] = {0., 0.};
+    for(auto v : vertices_around_face(halfedge(f, tm), tm))
+      for(int k = 0; k < 2; ++k) c[k] += p3(tm, v)[k] / 3;
+    chart[f] = c[0] < 1 || c[0] > 2 ? 0 : c[1] < 0.5 ? 1 : 2;
+  }
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm, CGAL::parameters::default_values());
+  auto chart_of = [&](halfedge_descriptor h) { return chart.at(face(h, tm)); };
+  auto length = [&](halfedge_descriptor h) {
+    const P3 p = p3(tm, source(h, tm)), q = p3(tm, target(h, tm));
+    return std::hypot(q[0] - p[0], q[1] - p[1]);
+  };
+  std::vector<long> curve_of;
+  const auto curves = QD::internal::chart_border_curves(tm, him, chart_of, length, curve_of);
+  BOOST_REQUIRE(curves.size() == 5u);
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> by_pair;  // the lengths of the pair's curves
+  std::size_t on_curves = 0;
+  for(std::size_t c = 0; c < curves.size(); ++c) {
+    BOOST_TEST(curves[c].a < curves[c].b);
+    double sum = 0;
+    std::set<std::size_t> xs;  // the x of every edge's vertices, times n
+    for(halfedge_descriptor h : curves[c].halfedges) {
+      BOOST_TEST(chart_of(h) == curves[c].a);
+      BOOST_TEST(chart_of(opposite(h, tm)) == curves[c].b);
+      BOOST_TEST(curve_of[get(him, h)] == long(c));
+      BOOST_TEST(curve_of[get(him, opposite(h, tm))] == long(c));
+      sum += length(h);
+      for(auto v : {source(h, tm), target(h, tm)}) xs.insert(std::size_t(std::lround(p3(tm, v)[0] * n)));
+    }
+    BOOST_TEST(curves[c].length == sum, tt::tolerance(1e-12));
+    on_curves += 2 * curves[c].halfedges.size();
+    by_pair[{curves[c].a, curves[c].b}].push_back(curves[c].length);
+    if(curves[c].b != 2 || curves[c].a != 1) BOOST_TEST(xs.size() == 1u);  // one of the vertical segments
+  }
+  BOOST_TEST(by_pair.size() == 3u);
+  for(const auto& pair : {std::make_pair(std::size_t(0), std::size_t(1)), std::make_pair(std::size_t(0), std::size_t(2))}) {
+    BOOST_REQUIRE(by_pair[pair].size() == 2u);
+    for(double l : by_pair[pair]) BOOST_TEST(l == 0.5, tt::tolerance(1e-12));
+  }
+  BOOST_REQUIRE(by_pair[std::make_pair(std::size_t(1), std::size_t(2))].size() == 1u);
+  BOOST_TEST(by_pair[std::make_pair(std::size_t(1), std::size_t(2))][0] == 1.0, tt::tolerance(1e-12));
+  // every other halfedge is on no curve
+  std::size_t marked = 0;
+  for(long c : curve_of) marked += c >= 0 ? 1 : 0;
+  BOOST_TEST(marked == on_curves);
+  BOOST_TEST(on_curves == 2 * (4 * (n / 2) + n));
 }
 
 
