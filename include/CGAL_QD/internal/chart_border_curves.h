@@ -26,7 +26,7 @@ namespace internal {
 template <class HalfedgeDescriptor>
 struct Chart_border_curve
 {
-  std::size_t a, b;                          // the charts on either side, a < b
+  std::size_t a = 0, b = 0;                  // the charts on either side, a < b
   std::vector<HalfedgeDescriptor> halfedges;  // one per edge, in a face of chart a
   double length = 0;                         // the sum of `edge_length()` over its edges
 };
