@@ -100,7 +100,8 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
   j["time_total_ms"] = number(r.time_total_ms);
   if(smoothing.requested) {
     const auto& s = smoothing.result;
-    j["seam_smoothing"] = {{"kept", s.kept},
+    j["seam_smoothing"] = {{"status", CGAL_QD::error_message(s.status)},
+                           {"kept", s.kept},
                            {"curves", s.number_of_curves},
                            {"curves_smoothed", s.smoothing.curves_smoothed},
                            {"curves_failed", s.smoothing.curves_failed},
@@ -114,7 +115,8 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
   }
   if(smoothing.shortening_requested) {
     const auto& c = smoothing.shortening;
-    j["cut_shortening"] = {{"kept", c.kept},
+    j["cut_shortening"] = {{"status", CGAL_QD::error_message(c.status)},
+                           {"kept", c.kept},
                            {"cut_curves", c.cut_curves},
                            {"cuts_passing_trials", c.cuts_passing_trials},
                            {"cuts_shortened", c.cuts_shortened},

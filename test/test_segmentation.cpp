@@ -2950,6 +2950,99 @@ BOOST_AUTO_TEST_CASE(fandisk_darts_are_shortened_from_their_loose_ends)
   BOOST_TEST((one.flattening.corner_uv == f.corner_uv));
 }
 
+// Coordinates beyond [2^-64, 2^64] (segment_mesh's seams were left unsmoothed
+// there, and a refused smoothing once emptied its result): the seam smoothing
+// and the cut shortening work on the points scaled by a power of two, as the
+// segmentation does, so fandisk at 2^100 and 2^-100 gives what it gives at 1,
+// the points, UVs and lengths multiplied by the scale, to the last bit
+BOOST_AUTO_TEST_CASE(seams_smoothed_and_cuts_shortened_in_any_finite_range)
+{
+  Surface_mesh input;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/fandisk.off", input));
+  struct Run
+  {
+    Surface_mesh tm, out;
+    Face_map<Surface_mesh> chart, out_chart;
+    QD::Segmentation_result<Surface_mesh> seg;
+    QD::Seam_smoothing_result<Surface_mesh> smoothing;
+    QD::Cut_shortening_result<Surface_mesh> shortening;
+  };
+  auto run = [&](double scale) {
+    auto r = std::make_unique<Run>();
+    r->tm = input;
+    for(auto v : vertices(r->tm)) {
+      const auto p = r->tm.point(v);
+      r->tm.point(v) = Surface_mesh::Point(p.x() * scale, p.y() * scale, p.z() * scale);
+    }
+    r->seg = QD::segment_quasi_developable(r->tm, boost::make_assoc_property_map(r->chart),
+                                           QD::parameters::final_flattening(false));
+    BOOST_REQUIRE(r->seg);
+    r->smoothing = QD::smooth_segmentation_seams(r->tm, boost::make_assoc_property_map(r->chart), r->seg, r->out,
+                                                 boost::make_assoc_property_map(r->out_chart));
+    BOOST_REQUIRE_MESSAGE(r->smoothing, QD::error_message(r->smoothing.status));
+    BOOST_REQUIRE(r->smoothing.kept);
+    r->shortening = QD::shorten_chart_cuts(r->out, boost::make_assoc_property_map(r->out_chart),
+                                           r->smoothing.flattening);
+    BOOST_REQUIRE_MESSAGE(r->shortening, QD::error_message(r->shortening.status));
+    return r;
+  };
+  const auto base = run(1.);
+  BOOST_TEST(base->smoothing.smoothing.curves_smoothed > 0u);
+  BOOST_TEST(base->shortening.kept);
+  for(const double scale : {0x1p100, 0x1p-100}) {
+    BOOST_TEST_CONTEXT("scale " << scale)
+    {
+      const auto r = run(scale);
+      BOOST_TEST(r->chart == base->chart);
+      // the smoothed mesh, its charts and flattening
+      const auto &s = r->smoothing, &s0 = base->smoothing;
+      BOOST_TEST(s.tries == s0.tries);
+      BOOST_TEST(s.smoothing.curves_smoothed == s0.smoothing.curves_smoothed);
+      BOOST_TEST(s.smoothing.max_border_move == s0.smoothing.max_border_move * scale);
+      BOOST_REQUIRE(num_vertices(r->out) == num_vertices(base->out));
+      BOOST_REQUIRE(num_faces(r->out) == num_faces(base->out));
+      bool same_points = true;
+      for(auto v : vertices(r->out)) {
+        const auto p = r->out.point(v), p0 = base->out.point(v);
+        same_points = same_points && p.x() == p0.x() * scale && p.y() == p0.y() * scale && p.z() == p0.z() * scale;
+      }
+      BOOST_TEST(same_points);
+      BOOST_TEST(r->out_chart == base->out_chart);
+      auto scaled_uv = [scale](std::vector<std::array<double, 2>> uv) {
+        for(auto& x : uv) x = {{x[0] * scale, x[1] * scale}};
+        return uv;
+      };
+      BOOST_TEST((s.flattening.corner_uv == scaled_uv(s0.flattening.corner_uv)));
+      BOOST_TEST(s.flattening.seam_length == s0.flattening.seam_length * scale);
+      BOOST_TEST(s.flattening.seam_zigzag == s0.flattening.seam_zigzag);
+      BOOST_TEST(s.flattening.seam_curves_matched == s0.flattening.seam_curves_matched);
+      BOOST_TEST(s.flattening.points.size() == num_vertices(r->out));
+      BOOST_TEST(s.flattening.points.back()[0] == s0.flattening.points.back()[0] * scale);
+      BOOST_TEST(!s.input_flattening.flattened);  // every seam of the first try matched
+      // the cuts shortened on the smoothed mesh
+      const auto &c = r->shortening, &c0 = base->shortening;
+      BOOST_TEST(c.kept == c0.kept);
+      BOOST_TEST(c.trials == c0.trials);
+      BOOST_TEST(c.cuts_shortened == c0.cuts_shortened);
+      BOOST_TEST(c.cut_length == c0.cut_length * scale);
+      BOOST_TEST(c.cut_length_closed == c0.cut_length_closed * scale);
+      BOOST_TEST((c.flattening.seam_edges == c0.flattening.seam_edges));
+      BOOST_TEST((c.flattening.corner_uv == scaled_uv(c0.flattening.corner_uv)));
+      BOOST_TEST(c.flattening.seam_length == c0.flattening.seam_length * scale);
+      BOOST_TEST(c.flattening.points.back()[2] == c0.flattening.points.back()[2] * scale);
+    }
+  }
+  // a smoothing refused leaves nothing flattened in its result (segment_mesh
+  // took such an empty flattening for the charts and lost them)
+  Surface_mesh not_empty = input;
+  const auto refused = QD::smooth_segmentation_seams(base->tm, boost::make_assoc_property_map(base->chart), base->seg,
+                                                     not_empty, boost::make_assoc_property_map(base->out_chart));
+  BOOST_TEST((refused.status == QD::Error_code::INVALID_ARGUMENT));
+  BOOST_TEST(!refused.kept);
+  BOOST_TEST(!refused.input_flattening.flattened);
+  BOOST_TEST(!refused.flattening.flattened);
+}
+
 // elephant at a quarter of its faces (written with 17 digits and read back),
 // segmented and its seams smoothed as segment_mesh does: the first
 // flattening after the trials leaves seams unmatched that matched before, so

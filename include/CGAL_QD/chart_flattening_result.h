@@ -80,6 +80,26 @@ struct Chart_flattening_result
   explicit operator bool() const { return status == Error_code::OK; }
 };
 
+namespace internal {
+
+// `r`, a flattening of the mesh scaled by `scale` (a power of two), in the
+// units of the mesh: its UVs, lengths and areas multiplied by 1 / `scale`
+// (exact), and its points too if `points` is set (the caller's otherwise)
+template <class TriangleMesh>
+void scale_flattening_back(Chart_flattening_result<TriangleMesh>& r, double scale, bool points)
+{
+  const double length = 1. / scale, area = length * length;
+  for(auto& uv : r.corner_uv)
+    for(double& x : uv) x *= length;
+  if(points)
+    for(auto& p : r.points)
+      for(double& x : p) x *= length;
+  for(Chart_report& c : r.charts) c.area *= area;
+  r.seam_length *= length;
+}
+
+} // namespace internal
+
 } // namespace CGAL_QD
 
 #endif // CGAL_QD_CHART_FLATTENING_RESULT_H

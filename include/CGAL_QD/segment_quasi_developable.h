@@ -69,10 +69,7 @@ template <class TriangleMesh>
 void scale_back(Segmentation_result<TriangleMesh>& r, double scale)
 {
   const double length = 1. / scale, area = length * length;
-  for(auto& uv : r.corner_uv)
-    for(double& x : uv) x *= length;
-  for(Chart_report& c : r.charts) c.area *= area;
-  r.seam_length *= length;
+  scale_flattening_back(r, scale, false);
   r.merging.seam_length *= length;
   for(double& a : r.vsa.chart_area) a *= area;
   r.vsa.smoothing_radius *= length;

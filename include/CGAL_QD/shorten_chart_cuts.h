@@ -15,6 +15,7 @@
 #include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/cut_shortening.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -57,7 +58,8 @@ struct Cut_shortening_result
   /// the flattenings after the trials: one, and one more each time the cuts of charts that then
   /// failed were put back
   std::size_t flattenings = 0;
-  /// the flattening of the charts with the shortened cuts, when `kept`
+  /// the flattening of the charts with the shortened cuts, when `kept` (its `flattened` is `false`
+  /// otherwise)
   Chart_flattening_result<TriangleMesh> flattening;
   double time_ms = 0;
 
@@ -134,12 +136,29 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
 
   const auto start = std::chrono::steady_clock::now();
   Cut_shortening_result<TriangleMesh> result;
+  result.flattening.flattened = false;  // on every return until one is kept
+  // coordinates beyond [2^-64, 2^64] are scaled by a power of two, which is
+  // exact (internal/point_scale.h): the points and the flattening of
+  // `segmentation`, and what is returned is scaled back
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
+  const double scale = internal::normalizing_scale(internal::largest_coordinate(vertices(tm), input_vpm));
+  const internal::Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
+  Chart_flattening_result<TriangleMesh> scaled_segmentation;
+  if(scale != 1.) {
+    scaled_segmentation = segmentation;
+    internal::scale_flattening_back(scaled_segmentation, 1. / scale, true);
+  }
+  const Chart_flattening_result<TriangleMesh>& seg = scale != 1. ? scaled_segmentation : segmentation;
   auto finish = [&]() {
+    if(scale != 1.) {
+      if(result.kept) internal::scale_flattening_back(result.flattening, scale, true);
+      result.cut_length *= 1. / scale;
+      result.cut_length_closed *= 1. / scale;
+    }
     result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
   };
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
@@ -149,10 +168,10 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
 
   result.status = internal::validate_mesh_to_segment(tm, vpm);
   if(result.status != Error_code::OK) return finish();
-  const std::size_t nf = static_cast<std::size_t>(num_faces(tm)), n = segmentation.number_of_charts;
-  if(!internal::thresholds_valid(thresholds) || !segmentation || !segmentation.flattened ||
-     segmentation.number_of_faces != nf || segmentation.corner_uv.size() != 3 * nf ||
-     segmentation.charts.size() != n) {
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm)), n = seg.number_of_charts;
+  if(!internal::thresholds_valid(thresholds) || !seg || !seg.flattened ||
+     seg.number_of_faces != nf || seg.corner_uv.size() != 3 * nf ||
+     seg.charts.size() != n) {
     result.status = Error_code::INVALID_ARGUMENT;
     return finish();
   }
@@ -167,14 +186,14 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   }
   // the seams (the mesh border is open anyway)
   std::vector<char> seam(num_halfedges(tm), 0);
-  for(edge_descriptor e : segmentation.seam_edges)
+  for(edge_descriptor e : seg.seam_edges)
     if(!is_border_edge(halfedge(e, tm), tm))
       seam[get(him, halfedge(e, tm))] = seam[get(him, opposite(halfedge(e, tm), tm))] = 1;
 
   // the points the segmentation was flattened with (the denoised ones, say)
   const std::vector<std::array<double, 3>> points =
-      segmentation.points.size() == static_cast<std::size_t>(num_vertices(tm))
-          ? segmentation.points
+      seg.points.size() == static_cast<std::size_t>(num_vertices(tm))
+          ? seg.points
           : internal::points_by_index(tm, vpm, vim);
   // the cuts tried as the merging tries a chart, with its margin below the A_loc bound
   internal::Merge_thresholds trial_thresholds = thresholds;
@@ -201,10 +220,10 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   // neighbours fitted to them; where a chart shortened is then rejected or
   // overlaps, or a seam of it stops matching in length, its cuts are put
   // back as they were, and the charts flattened again
-  const std::size_t unmatched_before = segmentation.number_of_seam_curves - segmentation.seam_curves_matched;
+  const std::size_t unmatched_before = seg.number_of_seam_curves - seg.seam_curves_matched;
   auto unmatched_before_too = [&](const std::pair<std::size_t, std::size_t>& pair) {
-    return std::find(segmentation.unmatched_seams.begin(), segmentation.unmatched_seams.end(), pair) !=
-           segmentation.unmatched_seams.end();
+    return std::find(seg.unmatched_seams.begin(), seg.unmatched_seams.end(), pair) !=
+           seg.unmatched_seams.end();
   };
   Chart_flattening_result<TriangleMesh>& f = result.flattening;
   while(std::find(shortened.begin(), shortened.end(), 1) != shortened.end()) {
@@ -232,7 +251,7 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
                                                    std::function<void(const char*, double)>(), f, nullptr, false,
-                                                   evaluator.orderings(), &frozen, &segmentation,
+                                                   evaluator.orderings(), &frozen, &seg,
                                                    evaluator.trial_memory());
     ++result.flattenings;
     if(!f) {
@@ -265,6 +284,7 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   }
   if(!result.kept) {
     result.flattening = Chart_flattening_result<TriangleMesh>();
+    result.flattening.flattened = false;
     return finish();
   }
   for(std::size_t k = 0; k < n; ++k)

@@ -12,6 +12,7 @@
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/flatten_charts.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/internal/smoothing_try.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/segmentation_measures.h>
@@ -53,7 +54,7 @@ struct Seam_smoothing_result
   /// when nothing was kept: the charts beyond the thresholds after the first try
   std::size_t rejected_charts = 0;
   std::size_t tries = 0;  ///< smoothings tried and flattened
-  /// the flattening of the charts of the output mesh, when `kept`
+  /// the flattening of the charts of the output mesh, when `kept` (its `flattened` is `false` otherwise)
   Chart_flattening_result<TriangleMesh> flattening;
   /// for a `segmentation` given without its flattening (`segment_quasi_developable()` with
   /// `CGAL_QD::parameters::final_flattening(false)`): the flattening of its charts as they are, made
@@ -133,16 +134,23 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
 
   const auto start = std::chrono::steady_clock::now();
   Seam_smoothing_result<TriangleMesh> result;
+  result.flattening.flattened = false;  // on every return until one is kept
+  result.input_flattening.flattened = false;  // on every return until it is made
   if(num_vertices(out) != 0 || num_faces(out) != 0 || !segmentation ||
      segmentation.number_of_faces != static_cast<std::size_t>(num_faces(tm))) {
     result.status = Error_code::INVALID_ARGUMENT;
     return result;
   }
   const internal::Merge_thresholds thresholds = internal::merge_thresholds_from<TriangleMesh>(np);
-  result.status = internal::validate_mesh_to_segment(tm, get(CGAL::vertex_point, tm));
+  // coordinates beyond [2^-64, 2^64] are scaled by a power of two, which is
+  // exact (internal/point_scale.h): the tries are copies of the mesh with the
+  // points scaled, and what is returned is scaled back
+  const auto input_vpm = get(CGAL::vertex_point, tm);
+  const double scale = internal::normalizing_scale(internal::largest_coordinate(vertices(tm), input_vpm));
+  const internal::Scaled_point_map<decltype(input_vpm)> vpm{input_vpm, scale};
+  result.status = internal::validate_mesh_to_segment(tm, vpm);
   if(result.status == Error_code::OK && !internal::thresholds_valid(thresholds)) result.status = Error_code::INVALID_ARGUMENT;
   if(result.status != Error_code::OK) return result;
-  result.input_flattening.flattened = false;
   // the flattening of the charts as they are: `segmentation` itself, or made
   // here as `segment_quasi_developable()` would have made it
   auto input_flattening = [&]() -> const Chart_flattening_result<TriangleMesh>& {
@@ -161,10 +169,14 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       }
       Chart_flattening_result<TriangleMesh>& made = result.input_flattening;
       made = Chart_flattening_result<TriangleMesh>();
-      made.points = segmentation.points.size() == static_cast<std::size_t>(num_vertices(tm))
-                        ? segmentation.points
-                        : internal::points_by_index(tm, get(CGAL::vertex_point, tm), vim);
-      internal::flatten_final_charts<ConcurrencyTag>(tm, get(CGAL::vertex_point, tm), fim, vim, him, chart,
+      if(segmentation.points.size() == static_cast<std::size_t>(num_vertices(tm))) {
+        made.points = segmentation.points;
+        for(auto& p : made.points)
+          for(double& x : p) x *= scale;
+      } else {
+        made.points = internal::points_by_index(tm, vpm, vim);
+      }
+      internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart,
                                                      segmentation.number_of_charts, segmentation.seam_edges,
                                                      thresholds, std::function<void(const char*, double)>(), made);
     }
@@ -177,6 +189,10 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
       result.status = Error_code::OK;
       input_flattening();
       if(result.status == Error_code::OK) result.status = smoothing_status;
+    }
+    if(scale != 1.) {
+      if(result.input_flattening.flattened) internal::scale_flattening_back(result.input_flattening, scale, true);
+      result.smoothing.max_border_move *= 1. / scale;
     }
     result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
@@ -284,7 +300,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
   auto smooth_at = [&](std::map<Chart_pair, std::size_t>& lv, double* zigzag_of_copy) {
     Smoothed out;
     out.t = std::make_unique<Try>();
-    out.t->copy(tm, face_chart, is_input_cut);
+    out.t->copy(tm, face_chart, is_input_cut, scale);
     TriangleMesh& mesh = out.t->mesh;
     auto& chart = out.t->chart;
     auto& cut = out.t->cut;
@@ -443,7 +459,7 @@ Seam_smoothing_result<TriangleMesh> smooth_segmentation_seams(
     result.kept = true;
     cache.clear();
     if(!best) best = smooth_at(best_level, nullptr).t;
-    result.flattening = best->copy_into(out, out_chart, std::move(best_flattening));
+    result.flattening = best->copy_into(out, out_chart, std::move(best_flattening), scale);
   }
   return finish();
 }

@@ -192,6 +192,33 @@ else()
   endif()
 endif()
 
+# coordinates beyond 2^64: the same pieces as at 1 (a cube's six sides,
+# unmerged), their seams smoothed and cuts shortened likewise (a refused seam
+# smoothing once emptied the result: "0 faces", no chart, and a success)
+foreach(unit 1 1e30)
+  set(u ${unit})
+  file(WRITE "${WORK_DIR}/cube_${unit}.off"
+       "OFF\n8 12 0\n0 0 0\n${u} 0 0\n${u} ${u} 0\n0 ${u} 0\n0 0 ${u}\n${u} 0 ${u}\n${u} ${u} ${u}\n0 ${u} ${u}\n"
+       "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n")
+  execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/cube_${unit}.off" --json --quiet --no-merge
+                          --out-dir "${WORK_DIR}/cube_${unit}"
+                  RESULT_VARIABLE code OUTPUT_VARIABLE json ERROR_VARIABLE err)
+  if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/cube_${unit}/patterns.svg")
+    string(APPEND failures "the cube at ${unit}: exit code ${code}, stderr '${err}'\n")
+    continue()
+  endif()
+  string(JSON faces GET "${json}" faces)
+  string(JSON charts GET "${json}" charts)
+  string(JSON smoothing_status GET "${json}" seam_smoothing status)
+  string(JSON shortening_status GET "${json}" cut_shortening status)
+  if(NOT faces EQUAL 12 OR NOT charts EQUAL 6 OR NOT smoothing_status STREQUAL "success"
+     OR NOT shortening_status STREQUAL "success")
+    string(APPEND failures "the cube at ${unit}: ${faces} faces, ${charts} charts, seam smoothing "
+                           "'${smoothing_status}', cut shortening '${shortening_status}'\n")
+  endif()
+  check_json_schema("${json}" "${schema}" "--json of the cube at ${unit}" failures)
+endforeach()
+
 if(failures)
   message(FATAL_ERROR "segment_mesh's command line:\n${failures}")
 endif()

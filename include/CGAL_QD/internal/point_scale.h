@@ -8,8 +8,9 @@
 // (areas, cotangents, Gram matrices) and square areas, which overflows for
 // coordinates beyond about 1e75 and underflows below about 1e-75. Inputs whose
 // largest |coordinate| is outside [2^-64, 2^64] are therefore either refused
-// (`Error_code::COORDINATES_OUT_OF_RANGE`) or, by `segment_quasi_developable()`
-// and `flatten_patch()`, scaled internally by a power of two, which is exact:
+// (`Error_code::COORDINATES_OUT_OF_RANGE`) or, by `segment_quasi_developable()`,
+// `smooth_segmentation_seams()`, `shorten_chart_cuts()` and `flatten_patch()`
+// (and the measures), scaled internally by a power of two, which is exact:
 // every result is then the one of the scaled mesh, scaled back.
 
 #include <CGAL/number_utils.h>

@@ -66,25 +66,30 @@ public:
   Smoothing_try(const Smoothing_try&) = delete;
   Smoothing_try& operator=(const Smoothing_try&) = delete;
 
-  // this (empty) becomes a copy of `source`, with the charts `source_chart` and
-  // the cuts where `is_cut(edge)` holds
+  // this (empty) becomes a copy of `source` with its points multiplied by
+  // `scale` (a power of two: exact), with the charts `source_chart` and the
+  // cuts where `is_cut(edge)` holds
   template <class SourceChartMap, class IsCut>
-  void copy(const TriangleMesh& source, const SourceChartMap& source_chart, const IsCut& is_cut)
+  void copy(const TriangleMesh& source, const SourceChartMap& source_chart, const IsCut& is_cut, double scale)
   {
     const Images images = copy_mesh(source, mesh);
+    scale_points(mesh, scale);
     for(face_descriptor f : faces(source))
       put(chart, images.face_of(f), static_cast<std::size_t>(get(source_chart, f)));
     for(edge_descriptor e : edges(source)) put(cut, edge(images.halfedge_of(halfedge(e, source)), mesh), bool(is_cut(e)));
   }
 
-  // copies this mesh into `out` (empty), its charts into `out_chart`, and
-  // returns `f`, the flattening of this mesh, for `out`: the UVs of the
-  // corners and the seam edges carried over, the points by `out`'s vertex index
+  // copies this mesh, made with `copy(..., scale)`, into `out` (empty) in the
+  // units of the source (its points divided by `scale`), its charts into
+  // `out_chart`, and returns `f`, the flattening of this mesh, for `out`: the
+  // UVs of the corners and the seam edges carried over, the points by `out`'s
+  // vertex index, UVs, lengths and areas in the units of the source
   template <class OutputChartMap>
   Chart_flattening_result<TriangleMesh> copy_into(TriangleMesh& out, OutputChartMap out_chart,
-                                                  Chart_flattening_result<TriangleMesh>&& f) const
+                                                  Chart_flattening_result<TriangleMesh>&& f, double scale) const
   {
     const Images images = copy_mesh(mesh, out);
+    scale_points(out, 1. / scale);
     typedef typename boost::property_traits<OutputChartMap>::value_type Id;
     for(face_descriptor f0 : faces(mesh)) put(out_chart, images.face_of(f0), static_cast<Id>(get(chart, f0)));
 
@@ -112,10 +117,23 @@ public:
     for(edge_descriptor& e : r.seam_edges) e = edge(images.halfedge_of(halfedge(e, mesh)), out);
     r.points = points_by_index(out, get(CGAL::vertex_point, out), CGAL::get_initialized_vertex_index_map(out));
     r.number_of_faces = static_cast<std::size_t>(num_faces(out));
+    if(scale != 1.) scale_flattening_back(r, scale, false);
     return r;
   }
 
 private:
+  // the points of `m` multiplied by `scale`
+  static void scale_points(TriangleMesh& m, double scale)
+  {
+    if(scale == 1.) return;
+    const auto vpm = get(CGAL::vertex_point, m);
+    typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
+    for(const auto v : vertices(m)) {
+      const Point p = get(vpm, v);
+      put(vpm, v, Point(p.x() * scale, p.y() * scale, p.z() * scale));
+    }
+  }
+
   // the image in a copy of every face and halfedge of its source, by index (a
   // few bytes each: on a mesh of a million faces, lists of pairs and a map of
   // the halfedges took a few hundred megabytes)
