@@ -161,6 +161,83 @@ BOOST_AUTO_TEST_CASE(several_components_and_a_handle)
   expect_valid_charts(tm, tc, rt.number_of_charts);
 }
 
+// Each connected component is a shape of its own at step 1: fandisk with a
+// stray triangle far away gets the charts it gets alone, and beside a copy of
+// itself as many (the proxies are added over the whole mesh, so not in the
+// same order). The scale of step 1 came from the bounding box of the whole
+// mesh: a triangle 100 away left fandisk one chart, and 8 pieces instead of 3.
+BOOST_AUTO_TEST_CASE(each_component_is_segmented_at_its_own_scale)
+{
+  Surface_mesh fandisk;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(CGAL_QD_DEMO_MESH_DIR) + "/fandisk.off", fandisk));
+  // `fandisk`, and a copy of it scaled by `scale` and moved by `shift`, or a triangle of side `side` at `shift`
+  auto with = [&](double scale, double shift, double side) {
+    Surface_mesh m = fandisk;
+    if(side > 0) {
+      const auto a = m.add_vertex(Surface_mesh::Point(shift, 0, 0));
+      const auto b = m.add_vertex(Surface_mesh::Point(shift, side, 0));
+      const auto c = m.add_vertex(Surface_mesh::Point(shift, 0, side));
+      m.add_face(a, b, c);
+      return m;
+    }
+    std::map<Surface_mesh::Vertex_index, Surface_mesh::Vertex_index> copy;
+    for(auto v : vertices(fandisk)) {
+      const auto p = fandisk.point(v);
+      copy[v] = m.add_vertex(Surface_mesh::Point(p.x() * scale + shift, p.y() * scale, p.z() * scale));
+    }
+    for(auto f : faces(fandisk)) {
+      std::vector<Surface_mesh::Vertex_index> vs;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, fandisk), fandisk)) vs.push_back(copy[v]);
+      m.add_face(vs);
+    }
+    return m;
+  };
+  auto vsa_charts = [](const Surface_mesh& m, std::vector<std::size_t>& ids) {
+    Chart_map<Surface_mesh> chart;
+    const auto r = QD::segment_by_error_controlled_vsa(m, boost::make_assoc_property_map(chart));
+    BOOST_REQUIRE(r);
+    ids.clear();
+    for(auto f : faces(m)) ids.push_back(chart.at(f));
+    return r;
+  };
+  // the charts of the faces [first, first + n) relabelled in order of appearance
+  auto partition = [](const std::vector<std::size_t>& ids, std::size_t first, std::size_t n) {
+    std::map<std::size_t, std::size_t> label;
+    std::vector<std::size_t> out;
+    for(std::size_t i = first; i < first + n; ++i) out.push_back(label.emplace(ids[i], label.size()).first->second);
+    return out;
+  };
+  const std::size_t nf = num_faces(fandisk);
+  std::vector<std::size_t> alone_ids;
+  const auto alone = vsa_charts(fandisk, alone_ids);
+  const std::vector<std::size_t> alone_partition = partition(alone_ids, 0, nf);
+
+  const Surface_mesh stray = with(1, 100, 1);
+  std::vector<std::size_t> ids;
+  const auto r = vsa_charts(stray, ids);
+  BOOST_TEST(r.number_of_charts == alone.number_of_charts + 1);
+  BOOST_TEST(partition(ids, 0, nf) == alone_partition);
+  BOOST_TEST(r.smoothing_radius == alone.smoothing_radius);  // of the largest component, fandisk
+
+  const Surface_mesh pair = with(1, 100, 0);
+  const auto rp = vsa_charts(pair, ids);
+  BOOST_TEST(rp.number_of_charts == 2 * alone.number_of_charts);
+  const std::vector<std::size_t> first = partition(ids, 0, nf), second = partition(ids, nf, nf);
+  BOOST_TEST(*std::max_element(first.begin(), first.end()) + 1 == alone.number_of_charts);
+  BOOST_TEST(*std::max_element(second.begin(), second.end()) + 1 == alone.number_of_charts);
+  BOOST_TEST(rp.min_chart_area == alone.min_chart_area, boost::test_tools::tolerance(1e-12));
+
+  // and the whole segmentation: fandisk's pieces and the triangle
+  Chart_map<Surface_mesh> c0, c1;
+  const auto s0 = QD::segment_quasi_developable(fandisk, boost::make_assoc_property_map(c0),
+                                                QD::parameters::final_flattening(false));
+  const auto s1 = QD::segment_quasi_developable(stray, boost::make_assoc_property_map(c1),
+                                                QD::parameters::final_flattening(false));
+  BOOST_REQUIRE(s0);
+  BOOST_REQUIRE(s1);
+  BOOST_TEST(s1.number_of_charts == s0.number_of_charts + 1);
+}
+
 BOOST_AUTO_TEST_CASE(proxy_cap_is_reported)
 {
   const Surface_mesh tm = make<Surface_mesh>(grid(48, 12, cylinder(1.0, 1.9 * pi, 3.0)));

@@ -59,12 +59,14 @@ struct Vsa_result
   /// before `max_number_of_proxies` was reached
   bool tolerance_reached = false;
   /// the radius over which face normals were averaged: 0.03 times the
-  /// diagonal of the bounding box of the face centroids
+  /// diagonal of the bounding box of the face centroids of the connected
+  /// component of largest area (each component has its own)
   double smoothing_radius = 0;
-  /// charts smaller than this area are not split further: the square of 0.07
-  /// times that diagonal
+  /// charts of that component smaller than this area are not split further:
+  /// the square of 0.07 times that diagonal
   double min_chart_area = 0;
-  /// the cap that applied: the named parameter, else ceil(total area / `min_chart_area`)
+  /// the cap that applied: the named parameter, else the sum over the components of
+  /// ceil(area / the component's `min_chart_area`)
   std::size_t max_number_of_proxies = 0;
   double time_ms = 0;
 
@@ -226,7 +228,9 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 ///
 /// The error is measured at the scale of the shape, not of its faces, so that
 /// the same shape at different resolutions gives about the same charts. With
-/// D the diagonal of the bounding box of the face centroids:
+/// D the diagonal of the bounding box of the face centroids of each connected
+/// component (so that a stray triangle or a second object changes nothing in
+/// the others):
 ///   - the normal of each face is the area-weighted mean of the normals of the
 ///     faces whose centroids are within 0.03 D of its centroid and reached
 ///     from it across edges without leaving that ball; edges whose dihedral
@@ -236,7 +240,7 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 ///     these normals;
 ///   - a chart whose area is below (0.07 D)^2 is not split further, whatever
 ///     its error: the tolerance is reached when every larger chart is within it;
-///   - the default proxy cap is ceil(total area / (0.07 D)^2).
+///   - the default proxy cap is the sum over the components of ceil(area / (0.07 D)^2).
 ///
 /// The mesh may be closed, have borders, several components or handles.
 ///
@@ -252,7 +256,8 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 /// \param np optional named parameters:
 ///   - `CGAL_QD::parameters::vsa_tolerance`: the largest normalised L2,1 error of a chart of at least
 ///     (0.07 D)^2 in area (default 0.25, which gives 25 charts on `bunny00` and 12 on `fandisk`)
-///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: ceil(total area / (0.07 D)^2));
+///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: the sum over the components
+///     of ceil(area / (0.07 D)^2));
 ///     `Vsa_result::tolerance_reached` tells whether the tolerance or this cap stopped the addition
 ///   - `number_of_relaxations`: relaxation iterations after each round of additions (default 3)
 ///   - `vertex_point_map`, `face_index_map`
@@ -287,28 +292,46 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
 
   typedef typename std::remove_const<decltype(fim)>::type FIM;
   const std::vector<internal::Face_geometry> raw = internal::face_geometry(tm, vpm, fim);
-  // the scale of the shape: the diagonal of the bounding box of the face centroids
-  double total_area = 0, lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  const std::vector<std::array<std::size_t, 3>> next_to = internal::face_neighbours(tm, fim);
+  // the scale of each connected component's shape: the diagonal of the
+  // bounding box of its face centroids (a stray triangle far away, or a
+  // second object, changes nothing in the others)
+  std::vector<std::size_t> component;
+  const std::size_t nc = internal::face_components(next_to, component);
+  std::vector<double> component_area(nc, 0.), lo(3 * nc, 0.), hi(3 * nc, 0.);
+  std::vector<char> seen(nc, 0);
   for(std::size_t i = 0; i < raw.size(); ++i) {
-    total_area += raw[i].area;
+    const std::size_t c = component[i];
+    component_area[c] += raw[i].area;
     for(int k = 0; k < 3; ++k) {
-      lo[k] = i == 0 ? raw[i].centroid[k] : (std::min)(lo[k], raw[i].centroid[k]);
-      hi[k] = i == 0 ? raw[i].centroid[k] : (std::max)(hi[k], raw[i].centroid[k]);
+      lo[3 * c + k] = !seen[c] ? raw[i].centroid[k] : (std::min)(lo[3 * c + k], raw[i].centroid[k]);
+      hi[3 * c + k] = !seen[c] ? raw[i].centroid[k] : (std::max)(hi[3 * c + k], raw[i].centroid[k]);
     }
+    seen[c] = 1;
   }
-  const double diagonal =
-      std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  result.smoothing_radius = internal::vsa_smoothing_radius * diagonal;
-  result.min_chart_area = internal::vsa_min_chart_size * diagonal * internal::vsa_min_chart_size * diagonal;
-  const std::vector<internal::Face_geometry> geo =
-      internal::smooth_face_normals<ConcurrencyTag>(tm, fim, raw, result.smoothing_radius, internal::vsa_crease_cos);
-  const std::size_t geometric_cap =
-      result.min_chart_area > 0 ? static_cast<std::size_t>(std::ceil(total_area / result.min_chart_area)) : 1;
+  std::vector<double> smoothing_radius(nc), min_chart_area(nc);
+  std::size_t geometric_cap = 0, largest = 0;
+  for(std::size_t c = 0; c < nc; ++c) {
+    const double* l = &lo[3 * c];
+    const double* h = &hi[3 * c];
+    const double diagonal =
+        std::sqrt((h[0] - l[0]) * (h[0] - l[0]) + (h[1] - l[1]) * (h[1] - l[1]) + (h[2] - l[2]) * (h[2] - l[2]));
+    smoothing_radius[c] = internal::vsa_smoothing_radius * diagonal;
+    min_chart_area[c] = internal::vsa_min_chart_size * diagonal * internal::vsa_min_chart_size * diagonal;
+    geometric_cap += min_chart_area[c] > 0
+                         ? (std::max<std::size_t>)(1, static_cast<std::size_t>(std::ceil(component_area[c] / min_chart_area[c])))
+                         : 1;
+    if(component_area[c] > component_area[largest]) largest = c;
+  }
+  result.smoothing_radius = smoothing_radius[largest];
+  result.min_chart_area = min_chart_area[largest];
+  const std::vector<internal::Face_geometry> geo = internal::smooth_face_normals<ConcurrencyTag>(
+      tm, fim, raw, component, smoothing_radius, internal::vsa_crease_cos);
   const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),
                                                    (std::max<std::size_t>)(1, geometric_cap));
   result.max_number_of_proxies = max_proxies;
 
-  internal::Normal_vsa vsa(geo, internal::face_neighbours(tm, fim), internal::faces_in_order(tm, fim));
+  internal::Normal_vsa vsa(geo, next_to, internal::faces_in_order(tm, fim));
   vsa.fit_in_parallel(internal::number_of_workers<ConcurrencyTag>() > 1);
   vsa.bootstrap();
   const std::size_t first_proxies = vsa.number_of_proxies();
@@ -316,8 +339,11 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
 
   std::vector<std::size_t> chart;
   auto proxy_of = [&](face_descriptor f) { return chart[get(fim, f)]; };
+  // the smallest area of a chart that is split further, by chart: its
+  // component's (a chart never leaves its component)
+  std::vector<double> min_area_of_chart;
   auto violates = [&](std::size_t k) {
-    return result.chart_error[k] > tolerance && result.chart_area[k] >= result.min_chart_area;
+    return result.chart_error[k] > tolerance && result.chart_area[k] >= min_area_of_chart[k];
   };
   for(;;) {
     // the charts' errors from the proxies' last fit where it was to them
@@ -327,6 +353,12 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     } else {
       chart = vsa.proxy_of();
       internal::chart_errors(tm, geo, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
+    }
+    min_area_of_chart.assign(result.chart_error.size(), min_chart_area[0]);
+    if(nc > 1) {
+      const std::vector<std::size_t> owner = vsa.proxy_of();
+      for(std::size_t i = 0; i < owner.size(); ++i)
+        if(owner[i] < min_area_of_chart.size()) min_area_of_chart[owner[i]] = min_chart_area[component[i]];
     }
     std::size_t violating = 0;
     for(std::size_t k = 0; k < result.chart_error.size(); ++k) violating += violates(k) ? 1 : 0;

@@ -71,6 +71,31 @@ std::vector<std::array<std::size_t, 3>> face_neighbours(const TriangleMesh& tm, 
   return next_to;
 }
 
+// the connected component of every face (through the edges of
+// `face_neighbours()`), numbered from 0 in the order of their first face;
+// returns how many there are
+inline std::size_t face_components(const std::vector<std::array<std::size_t, 3>>& next_to,
+                                   std::vector<std::size_t>& component)
+{
+  const std::size_t none = std::size_t(-1);
+  component.assign(next_to.size(), none);
+  std::vector<std::size_t> queue;
+  std::size_t n = 0;
+  for(std::size_t s = 0; s < next_to.size(); ++s) {
+    if(component[s] != none) continue;
+    component[s] = n;
+    queue.assign(1, s);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(std::size_t g : next_to[queue[q]])
+        if(g != none && component[g] == none) {
+          component[g] = n;
+          queue.push_back(g);
+        }
+    ++n;
+  }
+  return n;
+}
+
 // compactness 4 pi A / P^2 of a chart of area `area` and perimeter `perimeter` (1 without perimeter)
 inline double compactness_of(double area, double perimeter)
 {

@@ -138,27 +138,52 @@ std::array<double, 3> disc_sum(std::size_t start, const std::array<double, 3>& c
 // the disc is then known to a cluster's width, and the cost per face is the
 // number of clusters in a disc, which does not grow with the face count.
 //
+// Each connected component has its own radius: `component_radius[c]` for
+// the faces with `component[face] == c` (a disc never leaves its component).
+// Where the components hold more than `cluster_above` faces a disc on
+// average (weighted by their faces), all are clustered.
+//
 // With `CGAL::Parallel_tag` the faces' discs are summed in parallel (the
 // clusters are grown first, in order): the result is the same.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FIM>
 std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM& fim,
-                                               const std::vector<Face_geometry>& geo, double radius,
-                                               double sharp_cos, double cluster_above = clustered_disc_faces,
+                                               const std::vector<Face_geometry>& geo,
+                                               const std::vector<std::size_t>& component,
+                                               const std::vector<double>& component_radius, double sharp_cos,
+                                               double cluster_above = clustered_disc_faces,
                                                double cluster_radius = disc_cluster_radius)
 {
-  const std::size_t nf = geo.size(), none = std::size_t(-1);
+  const std::size_t nf = geo.size(), none = std::size_t(-1), nc0 = component_radius.size();
   std::vector<Face_geometry> out = geo;
-  if(!(radius > 0) || nf == 0) return out;
-  const double r2 = radius * radius;
+  std::vector<double> r2_of_component(nc0, 0.);
+  for(std::size_t c = 0; c < nc0; ++c)
+    if(component_radius[c] > 0) r2_of_component[c] = component_radius[c] * component_radius[c];
+  if(nf == 0 || std::none_of(r2_of_component.begin(), r2_of_component.end(), [](double r2) { return r2 > 0; }))
+    return out;
+  auto r2_of = [&](std::size_t face) { return r2_of_component[component[face]]; };
   const std::vector<std::array<std::size_t, 3>> next_to = smooth_neighbours(tm, fim, geo, sharp_cos);
   auto set_normal = [&](std::size_t s, const std::array<double, 3>& sum) {
     const double l = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
     if(l > 0)
       for(int k = 0; k < 3; ++k) out[s].normal[k] = sum[k] / l;
   };
-  double area = 0;
-  for(const Face_geometry& g : geo) area += g.area;
-  const bool clustered = area > 0 && double(nf) * pi * r2 / area > cluster_above;
+  // the faces a disc holds on average
+  bool clustered = false;
+  if(nc0 == 1) {
+    double area = 0;
+    for(const Face_geometry& g : geo) area += g.area;
+    clustered = area > 0 && double(nf) * pi * r2_of_component[0] / area > cluster_above;
+  } else {
+    std::vector<double> area(nc0, 0.), count(nc0, 0.);
+    for(std::size_t i = 0; i < nf; ++i) {
+      area[component[i]] += geo[i].area;
+      count[component[i]] += 1;
+    }
+    double weighted = 0;  // sum of faces times the faces of their discs
+    for(std::size_t c = 0; c < nc0; ++c)
+      if(area[c] > 0) weighted += count[c] * (count[c] * pi * r2_of_component[c] / area[c]);
+    clustered = weighted > cluster_above * double(nf);
+  }
 
   // the faces in `blocks` ranges, each with its own scratch: every face's sum
   // is the same whatever the number of blocks
@@ -192,6 +217,8 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
       for(int j = 0; j < 3; ++j) node[r].next[j] = next_to[order[r]][j] == none ? nil : rank[next_to[order[r]][j]];
     }
     for_each_face(nf, [&](std::size_t s, std::vector<std::size_t>& stamp, std::vector<std::size_t>& queue) {
+      const double r2 = r2_of(order[s]);
+      if(!(r2 > 0)) return;
       bool near = false;  // most faces of a coarse mesh have no neighbour within the radius
       for(int j = 0; j < 3; ++j) {
         const std::uint32_t g = node[s].next[j];
@@ -213,12 +240,12 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
 
   // clusters: grown from the faces in index order, across smooth edges, to the
   // faces within the cluster radius of the seed's centroid
-  const double c2 = cluster_radius * cluster_radius * r2;
   std::vector<std::size_t> cluster_of(nf, none), queue;
   std::vector<std::array<double, 3>> normal_sum, centroid;  // area-weighted sum; centroid of the faces
   std::vector<double> cluster_area;
   for(std::size_t s = 0; s < nf; ++s) {
     if(cluster_of[s] != none) continue;
+    const double c2 = cluster_radius * cluster_radius * r2_of(s);
     const std::size_t c = normal_sum.size();
     std::array<double, 3> n = {0., 0., 0.}, p = {0., 0., 0.};
     double a = 0;
@@ -283,6 +310,8 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
       morton_order(nf, [&](std::size_t i) -> const std::array<double, 3>& { return geo[i].centroid; });
   for_each_face(nc, [&](std::size_t s, std::vector<std::size_t>& seen, std::vector<std::size_t>& scratch) {
     const std::size_t f = face_order[s], c0 = rank[cluster_of[f]];
+    const double r2 = r2_of(f);
+    if(!(r2 > 0)) return;
     bool near = cluster[c0].area > geo[f].area;  // the face's own cluster has other faces
     for(std::size_t e = cluster[c0].first; e < cluster[c0 + 1].first; ++e)
       near = near || squared_distance3(geo[f].centroid, cluster[neighbour[e]].centroid) <= r2;
@@ -297,6 +326,18 @@ std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM
     set_normal(f, sum);
   });
   return out;
+}
+
+// the same with one radius for the whole mesh
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class FIM>
+std::vector<Face_geometry> smooth_face_normals(const TriangleMesh& tm, const FIM& fim,
+                                               const std::vector<Face_geometry>& geo, double radius,
+                                               double sharp_cos, double cluster_above = clustered_disc_faces,
+                                               double cluster_radius = disc_cluster_radius)
+{
+  return smooth_face_normals<ConcurrencyTag>(tm, fim, geo, std::vector<std::size_t>(geo.size(), 0),
+                                             std::vector<double>(1, radius), sharp_cos, cluster_above,
+                                             cluster_radius);
 }
 
 } // namespace internal
