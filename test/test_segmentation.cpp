@@ -165,7 +165,8 @@ BOOST_AUTO_TEST_CASE(several_components_and_a_handle)
 // stray triangle far away gets the charts it gets alone, and beside a copy of
 // itself as many (the proxies are added over the whole mesh, so not in the
 // same order). The scale of step 1 came from the bounding box of the whole
-// mesh: a triangle 100 away left fandisk one chart, and 8 pieces instead of 3.
+// mesh: a triangle 100 away left fandisk one chart (its area, 2.2, below the
+// (0.07 D)^2 of a chart split further), and 8 pieces instead of 3.
 BOOST_AUTO_TEST_CASE(each_component_is_segmented_at_its_own_scale)
 {
   Surface_mesh fandisk;
