@@ -741,6 +741,27 @@ BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
   Uv_store<Surface_mesh> uv0;
   BOOST_REQUIRE(QD::flatten_patch(cap, uv0.pmap()));
   const auto d0 = QD::compute_distortion(cap, uv0.pmap_const());
+  // the cap's ARAP map from LPFB+IP; at a power of two beyond the range, the
+  // same map times the scale, to the last bit
+  Uv_store<Surface_mesh> optimized0 = uv0;
+  const QD::Optimization_result o0 = QD::optimize_flattening(cap, optimized0.pmap());
+  BOOST_REQUIRE(o0);
+  for(const int exponent : {-100, 100}) {
+    const double scale = std::ldexp(1., exponent);
+    const Surface_mesh m = scaled_copy(cap, scale);
+    Uv_store<Surface_mesh> uv;
+    for(const auto v : vertices(m))
+      uv.map[v] = Uv_store<Surface_mesh>::Point_2(uv0.at(v)[0] * scale, uv0.at(v)[1] * scale);
+    const QD::Optimization_result o = QD::optimize_flattening(m, uv.pmap());
+    BOOST_REQUIRE_MESSAGE(o, QD::error_message(o.status));
+    BOOST_TEST(o.iterations == o0.iterations);
+    BOOST_TEST(o.energy_after == o0.energy_after);
+    BOOST_TEST(o.lengths_preserved);
+    std::size_t different = 0;
+    for(const auto v : vertices(m))
+      for(int k = 0; k < 2; ++k) different += uv.at(v)[k] == optimized0.at(v)[k] * scale ? 0 : 1;
+    BOOST_TEST(different == 0u);
+  }
   for(const double scale : {1e-300, 1e-200, 1e200, 1e300}) {
     BOOST_TEST_CONTEXT("scale " << scale)
     {
@@ -763,12 +784,20 @@ BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
       BOOST_TEST(QD::number_of_flipped_faces(m, uv.pmap_const()) == 0u);
       BOOST_TEST(!QD::has_global_overlap(m, uv.pmap_const()));
 
+      // optimize_flattening() scales too
+      const QD::Optimization_result o = QD::optimize_flattening(m, uv.pmap());
+      BOOST_REQUIRE_MESSAGE(o, QD::error_message(o.status));
+      error = 0;
+      for(const auto v : vertices(m))
+        for(int k = 0; k < 2; ++k) error = (std::max)(error, std::abs(uv.at(v)[k] / scale - optimized0.at(v)[k]));
+      BOOST_TEST(error < 1e-6);
+      BOOST_TEST(close(o.energy_after, o0.energy_after, 1e-3));
+
       // functions without the scaling refuse such coordinates by name
       Uv_store<Surface_mesh> border;
       BOOST_TEST((QD::compute_length_preserved_free_boundary(m, border.pmap()).status ==
                   QD::Error_code::COORDINATES_OUT_OF_RANGE));
       BOOST_TEST(border.map.empty());
-      BOOST_TEST((QD::optimize_flattening(m, uv.pmap()).status == QD::Error_code::COORDINATES_OUT_OF_RANGE));
       Surface_mesh copy = m;
       auto chart = copy.add_property_map<Surface_mesh::Face_index, std::size_t>("f:c", 0).first;
       BOOST_TEST((QD::segment_by_error_controlled_vsa(copy, chart).status == QD::Error_code::COORDINATES_OUT_OF_RANGE));

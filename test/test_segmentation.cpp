@@ -220,23 +220,58 @@ BOOST_AUTO_TEST_CASE(each_component_is_segmented_at_its_own_scale)
   BOOST_TEST(partition(ids, 0, nf) == alone_partition);
   BOOST_TEST(r.smoothing_radius == alone.smoothing_radius);  // of the largest component, fandisk
 
-  const Surface_mesh pair = with(1, 100, 0);
-  const auto rp = vsa_charts(pair, ids);
-  BOOST_TEST(rp.number_of_charts == 2 * alone.number_of_charts);
-  const std::vector<std::size_t> first = partition(ids, 0, nf), second = partition(ids, nf, nf);
-  BOOST_TEST(*std::max_element(first.begin(), first.end()) + 1 == alone.number_of_charts);
-  BOOST_TEST(*std::max_element(second.begin(), second.end()) + 1 == alone.number_of_charts);
-  BOOST_TEST(rp.min_chart_area == alone.min_chart_area, boost::test_tools::tolerance(1e-12));
+  // beside a copy of itself, of the same size or 1024 times as large: each
+  // copy gets the charts of fandisk alone, and step 1 adds to each the
+  // proxies it adds alone (segmented at once, as CGAL's class segments, a
+  // round's proxies went in proportion to the L2,1 errors, which grow with
+  // the square of the size: the large copy took the small one's proxies, up
+  // to the cap)
+  for(const double scale : {1., 1024.}) {
+    BOOST_TEST_CONTEXT("copy scaled by " << scale)
+    {
+      const Surface_mesh pair = with(scale, 100 * scale, 0);
+      const auto rp = vsa_charts(pair, ids);
+      BOOST_TEST(rp.number_of_charts == 2 * alone.number_of_charts);
+      BOOST_TEST(partition(ids, 0, nf) == alone_partition);
+      BOOST_TEST(partition(ids, nf, nf) == alone_partition);
+      BOOST_TEST(rp.proxies_added == 2 * alone.proxies_added);
+      BOOST_TEST(rp.tolerance_reached);
+      BOOST_TEST(rp.min_chart_area == alone.min_chart_area * scale * scale, boost::test_tools::tolerance(1e-12));
+    }
+  }
+  // a cap given is shared out over the components, in proportion to their own caps
+  {
+    Chart_map<Surface_mesh> chart;
+    const auto capped = QD::segment_by_error_controlled_vsa(with(1024, 102400, 0), boost::make_assoc_property_map(chart),
+                                                            CGAL::parameters::max_number_of_proxies(6));
+    BOOST_REQUIRE(capped);
+    BOOST_TEST(!capped.tolerance_reached);
+    BOOST_TEST(capped.max_number_of_proxies == 6u);
+    BOOST_TEST(capped.proxies_added == 4u);  // 3 proxies for each copy, one of them its first
+  }
 
-  // and the whole segmentation: fandisk's pieces and the triangle
-  Chart_map<Surface_mesh> c0, c1;
+  // and the whole segmentation: fandisk's pieces and the triangle; twice
+  // fandisk's pieces for fandisk beside a copy 1024 times as large; and with
+  // a triangle 1e30 away, whose scale the segmentation takes for the whole
+  // mesh: fandisk's charts then lie below 2^-64, and their trials and final
+  // flattenings are scaled again, chart by chart (every ARAP trial failed
+  // there: fandisk came out in 9 pieces, every one of them LPFB+IP's)
+  Chart_map<Surface_mesh> c0, c1, c2, c3;
   const auto s0 = QD::segment_quasi_developable(fandisk, boost::make_assoc_property_map(c0),
                                                 QD::parameters::final_flattening(false));
   const auto s1 = QD::segment_quasi_developable(stray, boost::make_assoc_property_map(c1),
                                                 QD::parameters::final_flattening(false));
+  const auto s2 = QD::segment_quasi_developable(with(1024, 102400, 0), boost::make_assoc_property_map(c2),
+                                                QD::parameters::final_flattening(false));
   BOOST_REQUIRE(s0);
   BOOST_REQUIRE(s1);
+  BOOST_REQUIRE(s2);
   BOOST_TEST(s1.number_of_charts == s0.number_of_charts + 1);
+  BOOST_TEST(s2.number_of_charts == 2 * s0.number_of_charts);
+  const auto s3 = QD::segment_quasi_developable(with(1, 1e30, 1e28), boost::make_assoc_property_map(c3),
+                                                QD::parameters::final_flattening(false));
+  BOOST_REQUIRE(s3);
+  BOOST_TEST(s3.number_of_charts == s0.number_of_charts + 1);
 }
 
 BOOST_AUTO_TEST_CASE(proxy_cap_is_reported)

@@ -18,6 +18,7 @@
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/anderson_acceleration.h>
 #include <CGAL_QD/internal/arap_optimizer.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/internal/validation.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -265,6 +266,10 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 /// would flip a face is shortened (halved up to ten times; the iteration stops
 /// if no length works). A map that starts with flipped faces may unfold.
 ///
+/// Points and UVs whose largest |coordinate| is beyond [2^-64, 2^64] are
+/// optimised scaled by a power of two, which is exact, and the map is scaled
+/// back, as in `flatten_patch()`.
+///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` from vertices to a 2D
 ///         point type constructible from two `double`
@@ -301,8 +306,7 @@ Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<s
 ///     factorisation is faster to compute on large patches but slower to solve with)
 ///   - `vertex_point_map`, `vertex_index_map`
 /// \returns an `Optimization_result`: `EMPTY_MESH`, `NOT_TRIANGLE_MESH`,
-///          `INVALID_COORDINATES` (a non-finite point or UV), `COORDINATES_OUT_OF_RANGE` (a
-///          |coordinate| of a point or UV beyond [2^-64, 2^64]), `DEGENERATE_FACE`,
+///          `INVALID_COORDINATES` (a non-finite point or UV), `DEGENERATE_FACE`,
 ///          `NO_BORDER`, `DEGENERATE_EDGE` (a target length that is not positive and finite),
 ///          `INVALID_ARGUMENT` (an `area_preservation` outside [0, 1], an `anderson_acceleration` outside
 ///          [0, 100], a negative or non-finite `number_of_free_iterations`) on invalid input,
@@ -368,16 +372,23 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       return result;
     }
   }
+  // points and UVs beyond [2^-64, 2^64] are optimised scaled by a power of two,
+  // which is exact (internal/point_scale.h): a chart of a small component of a
+  // mesh normalised as a whole can be that small; the map is scaled back
+  double scale = 1.;
   {
     double largest = 0;
     for(std::size_t i = 0; i < nv; ++i)
       largest = (std::max)({largest, std::abs(p[i][0]), std::abs(p[i][1]), std::abs(p[i][2]), std::abs(u[i][0]),
                             std::abs(u[i][1])});
-    if(!internal::coordinates_in_range(largest)) {
-      result.status = Error_code::COORDINATES_OUT_OF_RANGE;
-      return result;
-    }
+    scale = internal::normalizing_scale(largest);
+    if(scale != 1.)
+      for(std::size_t i = 0; i < nv; ++i) {
+        for(int k = 0; k < 3; ++k) p[i][k] *= scale;
+        for(int k = 0; k < 2; ++k) u[i][k] *= scale;
+      }
   }
+  const internal::Scaled_point_map<typename std::remove_const<decltype(vpm)>::type> scaled_vpm{vpm, scale};
   std::vector<std::array<std::size_t, 3>> tri;
   tri.reserve(num_faces(tm));
   for(face_descriptor f : faces(tm)) {
@@ -392,9 +403,14 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       return result;
     }
   }
-  const auto length_of = internal::border_length_functor(
-      tm, vpm, np,
-      typename CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_edge_length_map_t>::type());
+  // the 3D lengths of the scaled points (the square of a length of 1e-300
+  // is 0), or the lengths given, scaled
+  typedef typename CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_edge_length_map_t>::type
+      Lengths_are_3D;
+  const auto input_length_of = internal::border_length_functor(tm, scaled_vpm, np, Lengths_are_3D());
+  const auto length_of = [&](typename GT::edge_descriptor e) {
+    return Lengths_are_3D::value ? input_length_of(e) : scale * input_length_of(e);
+  };
   std::vector<std::array<std::size_t, 2>> border_edges;
   std::vector<double> border_length;
   for(halfedge_descriptor h : halfedges(tm))
@@ -427,7 +443,7 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       std::vector<vertex_descriptor> vertex_of(nv);
       for(vertex_descriptor v : vertices(tm)) vertex_of[get(vim, v)] = v;
       const auto callback = [&](std::size_t iterations, const std::vector<std::array<double, 2>>& map) {
-        for(std::size_t i = 0; i < nv; ++i) put(uv, vertex_of[i], Point_2(map[i][0], map[i][1]));
+        for(std::size_t i = 0; i < nv; ++i) put(uv, vertex_of[i], Point_2(map[i][0] / scale, map[i][1] / scale));
         return bool(user(iterations));
       };
       result = internal::optimize_flattening_impl(nv, tri, p, border_edges, border_length, u, free_opt, solver, callback);
@@ -441,7 +457,7 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
     typedef typename std::remove_const<decltype(vim)>::type VIM;
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     const Free_boundary_result b = internal::length_preserved_free_boundary_impl(
-        tm, *faces(tm).begin(), true, GT::null_halfedge(), internal::Indexed_uv_map<VIM>{&border_uv, vim}, vpm, vim,
+        tm, *faces(tm).begin(), true, GT::null_halfedge(), internal::Indexed_uv_map<VIM>{&border_uv, vim}, scaled_vpm, vim,
         fim, internal::lpfb_options_from(np), [&](vertex_descriptor v) { on_border[get(vim, v)] = 1; },
         internal::Planar_point_map<VIM>{&u, vim}, length_of);
     result.border_status = b.status;
@@ -483,7 +499,7 @@ Optimization_result optimize_flattening(const TriangleMesh& tm, VertexUVMap uv,
       result.lengths_preserved = true;
     }
   }
-  for(vertex_descriptor v : vertices(tm)) put(uv, v, Point_2(u[get(vim, v)][0], u[get(vim, v)][1]));
+  for(vertex_descriptor v : vertices(tm)) put(uv, v, Point_2(u[get(vim, v)][0] / scale, u[get(vim, v)][1] / scale));
   return result;
 }
 

@@ -53,10 +53,10 @@ struct Vsa_result
   /// and n_c the chart's area-weighted mean of them. In [0, 4].
   std::vector<double> chart_error;
   std::vector<double> chart_area;
-  /// proxies added beyond the first of each connected component
+  /// proxies added beyond the first of each connected component (summed)
   std::size_t proxies_added = 0;
-  /// whether every chart of at least `min_chart_area` was within the tolerance
-  /// before `max_number_of_proxies` was reached
+  /// whether every chart of at least `min_chart_area` (its component's) was
+  /// within the tolerance before `max_number_of_proxies` was reached
   bool tolerance_reached = false;
   /// the radius over which face normals were averaged: 0.03 times the
   /// diagonal of the bounding box of the face centroids of the connected
@@ -86,17 +86,17 @@ inline constexpr double vsa_min_chart_size = 0.07;
 // normal by more than 60 degrees (creases such as a cube's edges)
 inline constexpr double vsa_crease_cos = 0.5;
 
-// Normalised L2,1 error of every chart, from per-face unit normals and areas.
-template <class TriangleMesh, class FIM, class ChartOf>
-void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo, const FIM& fim, std::size_t n_charts,
-                  const ChartOf& chart_of, std::vector<double>& error, std::vector<double>& area)
+// Normalised L2,1 error of every chart, from per-face unit normals and areas:
+// the faces taken in `order` (indices into `geo` and `chart`).
+inline void chart_errors(const std::vector<Face_geometry>& geo, const std::vector<std::size_t>& order,
+                         const std::vector<std::size_t>& chart, std::size_t n_charts, std::vector<double>& error,
+                         std::vector<double>& area)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<std::array<double, 3>> normal_sum(n_charts, {0., 0., 0.});
   area.assign(n_charts, 0.);
-  for(typename GT::face_descriptor f : faces(tm)) {
-    const std::size_t k = chart_of(f);
-    const Face_geometry& d = geo[get(fim, f)];
+  for(std::size_t f : order) {
+    const std::size_t k = chart[f];
+    const Face_geometry& d = geo[f];
     for(int i = 0; i < 3; ++i) normal_sum[k][i] += d.area * d.normal[i];
     area[k] += d.area;
   }
@@ -106,14 +106,79 @@ void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo,
                                normal_sum[k][2] * normal_sum[k][2]);
     if(l > 0) for(int i = 0; i < 3; ++i) normal_sum[k][i] /= l;
   }
-  for(typename GT::face_descriptor f : faces(tm)) {
-    const Face_geometry& d = geo[get(fim, f)];
-    const std::size_t k = chart_of(f);
+  for(std::size_t f : order) {
+    const Face_geometry& d = geo[f];
+    const std::size_t k = chart[f];
     const double x = d.normal[0] - normal_sum[k][0], y = d.normal[1] - normal_sum[k][1],
                  z = d.normal[2] - normal_sum[k][2];
     error[k] += d.area * (x * x + y * y + z * z);
   }
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
+}
+
+// the same, the faces taken in the order of `faces(tm)`
+template <class TriangleMesh, class FIM, class ChartOf>
+void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo, const FIM& fim, std::size_t n_charts,
+                  const ChartOf& chart_of, std::vector<double>& error, std::vector<double>& area)
+{
+  const std::vector<std::size_t> order = faces_in_order(tm, fim);
+  std::vector<std::size_t> chart(geo.size(), 0);
+  for(auto f : faces(tm)) chart[get(fim, f)] = chart_of(f);
+  chart_errors(geo, order, chart, n_charts, error, area);
+}
+
+// The proxies of step 1 on one connected component: its faces' geometry,
+// their neighbours (indices into the same arrays) and their order. Proxies are
+// added where the error is worst until every chart of at least
+// `min_chart_area` is within `tolerance`, or `cap` proxies are reached.
+struct Vsa_proxies
+{
+  std::vector<std::size_t> proxy_of;  // by face
+  std::size_t count = 0;
+  std::size_t added = 0;  // beyond the first
+  bool tolerance_reached = false;
+};
+
+inline Vsa_proxies vsa_proxies(const std::vector<Face_geometry>& geo,
+                               const std::vector<std::array<std::size_t, 3>>& next_to,
+                               const std::vector<std::size_t>& order, double tolerance, double min_chart_area,
+                               std::size_t cap, std::size_t relaxations, bool parallel)
+{
+  Vsa_proxies out;
+  Normal_vsa vsa(geo, next_to, order);
+  vsa.fit_in_parallel(parallel);
+  vsa.bootstrap();
+  const std::size_t first = vsa.number_of_proxies();
+  vsa.run(relaxations);
+  std::vector<double> error, area;
+  for(;;) {
+    // the charts' errors from the proxies' last fit where it was to them
+    // (the same numbers), else measured over the faces
+    if(vsa.fitted_to_charts()) {
+      vsa.chart_errors(error, area);
+    } else {
+      out.proxy_of = vsa.proxy_of();
+      chart_errors(geo, order, out.proxy_of, vsa.number_of_proxies(), error, area);
+    }
+    std::size_t violating = 0;
+    for(std::size_t k = 0; k < error.size(); ++k) violating += error[k] > tolerance && area[k] >= min_chart_area ? 1 : 0;
+    if(violating == 0) {
+      out.tolerance_reached = true;
+      break;
+    }
+    if(vsa.number_of_proxies() >= cap) break;
+    // one proxy per chart beyond the tolerance, spread over the charts in
+    // proportion to their error, then relax once (every round re-partitions
+    // the whole component, so the number of rounds sets the time)
+    const std::size_t add = (std::min)(cap - vsa.number_of_proxies(), violating);
+    const std::size_t added = add == 1 ? vsa.add_to_furthest_proxies(1, 0) : vsa.add_proxies_error_diffusion(add);
+    if(added == 0) break;
+    vsa.run(relaxations);
+  }
+  out.proxy_of = vsa.proxy_of();
+  out.count = vsa.number_of_proxies();
+  out.added = out.count - first;
+  return out;
 }
 
 // a property map that stores face values in a vector by face index
@@ -219,10 +284,11 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 
 /// \ingroup PkgCGAL_QDRef
 /// segments `tm` into nearly planar, connected charts by error-controlled
-/// Variational Shape Approximation (paper Section 2, step 1): starting from one
-/// proxy per connected component, proxies are added where the L2,1 error is
-/// worst, each round of additions followed by relaxation, until every chart's
-/// normalised L2,1 error is at most the tolerance. Adjacent charts whose union
+/// Variational Shape Approximation (paper Section 2, step 1): each connected
+/// component is segmented on its own, as if it were alone: starting from one
+/// proxy, proxies are added where the L2,1 error is worst, each round of
+/// additions followed by relaxation, until every chart's normalised L2,1 error
+/// is at most the tolerance. Adjacent charts whose union
 /// is still within the tolerance are then merged, cheapest first (incremental
 /// seeding can split one planar region). Writes a chart id in `[0, n)` per face.
 ///
@@ -257,7 +323,8 @@ std::size_t merge_charts_within_tolerance(const TriangleMesh& tm, const std::vec
 ///   - `CGAL_QD::parameters::vsa_tolerance`: the largest normalised L2,1 error of a chart of at least
 ///     (0.07 D)^2 in area (default 0.25, which gives 25 charts on `bunny00` and 12 on `fandisk`)
 ///   - `max_number_of_proxies`: stop adding proxies beyond this number (default: the sum over the components
-///     of ceil(area / (0.07 D)^2));
+///     of ceil(area / (0.07 D)^2)); with several components, each gets a share of it in proportion to its
+///     ceil(area / (0.07 D)^2), at least one proxy;
 ///     `Vsa_result::tolerance_reached` tells whether the tolerance or this cap stopped the addition
 ///   - `number_of_relaxations`: relaxation iterations after each round of additions (default 3)
 ///   - `vertex_point_map`, `face_index_map`
@@ -310,6 +377,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     seen[c] = 1;
   }
   std::vector<double> smoothing_radius(nc), min_chart_area(nc);
+  std::vector<std::size_t> own_cap(nc);  // ceil(area / (0.07 D)^2), at least 1
   std::size_t geometric_cap = 0, largest = 0;
   for(std::size_t c = 0; c < nc; ++c) {
     const double* l = &lo[3 * c];
@@ -318,9 +386,10 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
         std::sqrt((h[0] - l[0]) * (h[0] - l[0]) + (h[1] - l[1]) * (h[1] - l[1]) + (h[2] - l[2]) * (h[2] - l[2]));
     smoothing_radius[c] = internal::vsa_smoothing_radius * diagonal;
     min_chart_area[c] = internal::vsa_min_chart_size * diagonal * internal::vsa_min_chart_size * diagonal;
-    geometric_cap += min_chart_area[c] > 0
-                         ? (std::max<std::size_t>)(1, static_cast<std::size_t>(std::ceil(component_area[c] / min_chart_area[c])))
-                         : 1;
+    own_cap[c] = min_chart_area[c] > 0 ? (std::max<std::size_t>)(
+                                             1, static_cast<std::size_t>(std::ceil(component_area[c] / min_chart_area[c])))
+                                       : 1;
+    geometric_cap += own_cap[c];
     if(component_area[c] > component_area[largest]) largest = c;
   }
   result.smoothing_radius = smoothing_radius[largest];
@@ -330,56 +399,74 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   const std::size_t max_proxies = choose_parameter(get_parameter(np, CGAL::internal_np::max_number_of_proxies),
                                                    (std::max<std::size_t>)(1, geometric_cap));
   result.max_number_of_proxies = max_proxies;
-
-  internal::Normal_vsa vsa(geo, next_to, internal::faces_in_order(tm, fim));
-  vsa.fit_in_parallel(internal::number_of_workers<ConcurrencyTag>() > 1);
-  vsa.bootstrap();
-  const std::size_t first_proxies = vsa.number_of_proxies();
-  vsa.run(relaxations);
-
-  std::vector<std::size_t> chart;
-  auto proxy_of = [&](face_descriptor f) { return chart[get(fim, f)]; };
-  // the smallest area of a chart that is split further, by chart: its
-  // component's (a chart never leaves its component)
-  std::vector<double> min_area_of_chart;
-  auto violates = [&](std::size_t k) {
-    return result.chart_error[k] > tolerance && result.chart_area[k] >= min_area_of_chart[k];
-  };
-  for(;;) {
-    // the charts' errors from the proxies' last fit where it was to them
-    // (the same numbers), else measured over the mesh
-    if(vsa.fitted_to_charts()) {
-      vsa.chart_errors(result.chart_error, result.chart_area);
-    } else {
-      chart = vsa.proxy_of();
-      internal::chart_errors(tm, geo, fim, vsa.number_of_proxies(), proxy_of, result.chart_error, result.chart_area);
+  // each component's cap: its own, or its share of the one given, in
+  // proportion to their own ones (at least one proxy each)
+  std::vector<std::size_t> cap = own_cap;
+  if(nc == 1) {
+    cap[0] = max_proxies;
+  } else if(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                     CGAL::internal_np::max_number_of_proxies_t>::value) {
+    double residual = 0.;
+    for(std::size_t c = 0; c < nc; ++c) {
+      const double x = residual + double(own_cap[c]) * double(max_proxies) / double(geometric_cap),
+                   rounded = std::floor(x + 0.5);
+      residual = x - rounded;
+      cap[c] = static_cast<std::size_t>((std::min)((std::max)(1., rounded), 1e15));  // a cap of 2^64 - 1 stays finite
     }
-    min_area_of_chart.assign(result.chart_error.size(), min_chart_area[0]);
-    if(nc > 1) {
-      const std::vector<std::size_t> owner = vsa.proxy_of();
-      for(std::size_t i = 0; i < owner.size(); ++i)
-        if(owner[i] < min_area_of_chart.size()) min_area_of_chart[owner[i]] = min_chart_area[component[i]];
-    }
-    std::size_t violating = 0;
-    for(std::size_t k = 0; k < result.chart_error.size(); ++k) violating += violates(k) ? 1 : 0;
-    if(violating == 0) { result.tolerance_reached = true; break; }
-    if(vsa.number_of_proxies() >= max_proxies) break;
-    // one proxy per chart beyond the tolerance, spread over the charts in
-    // proportion to their error, then relax once (every round re-partitions
-    // the whole mesh, so the number of rounds sets the time)
-    const std::size_t add = (std::min)(max_proxies - vsa.number_of_proxies(), violating);
-    const std::size_t added = add == 1 ? vsa.add_to_furthest_proxies(1, 0) : vsa.add_proxies_error_diffusion(add);
-    if(added == 0) break;
-    vsa.run(relaxations);
   }
 
-  chart = vsa.proxy_of();
+  // Each component on its own, as if it were alone: the proxies of a round
+  // are shared out in proportion to the charts' L2,1 errors, which grow with
+  // the square of a component's size, and every round relaxes every chart,
+  // so a component segmented beside others would get a share that depends on
+  // them (a large object took the proxies a small one beside it needed).
+  const bool parallel = internal::number_of_workers<ConcurrencyTag>() > 1;
+  std::vector<std::size_t> chart(nf, 0);
+  result.tolerance_reached = true;
+  if(nc == 1) {
+    internal::Vsa_proxies p = internal::vsa_proxies(geo, next_to, internal::faces_in_order(tm, fim), tolerance,
+                                                    min_chart_area[0], cap[0], relaxations, parallel);
+    chart.swap(p.proxy_of);
+    result.proxies_added = p.added;
+    result.tolerance_reached = p.tolerance_reached;
+  } else {
+    // the faces of each component in the order of `faces(tm)`, and their
+    // index in it
+    std::size_t proxies = 0;  // of the components before
+    std::vector<std::vector<std::size_t>> members(nc);
+    std::vector<std::size_t> local(nf);
+    for(std::size_t f : internal::faces_in_order(tm, fim)) {
+      local[f] = members[component[f]].size();
+      members[component[f]].push_back(f);
+    }
+    for(std::size_t c = 0; c < nc; ++c) {
+      const std::vector<std::size_t>& m = members[c];
+      std::vector<internal::Face_geometry> g(m.size());
+      std::vector<std::array<std::size_t, 3>> next(m.size());
+      std::vector<std::size_t> order(m.size());
+      for(std::size_t i = 0; i < m.size(); ++i) {
+        g[i] = geo[m[i]];
+        for(int k = 0; k < 3; ++k) {
+          const std::size_t across = next_to[m[i]][k];
+          next[i][k] = across == internal::Normal_vsa::none ? across : local[across];
+        }
+        order[i] = i;
+      }
+      const internal::Vsa_proxies p =
+          internal::vsa_proxies(g, next, order, tolerance, min_chart_area[c], cap[c], relaxations, parallel);
+      for(std::size_t i = 0; i < m.size(); ++i) chart[m[i]] = proxies + p.proxy_of[i];
+      proxies += p.count;
+      result.proxies_added += p.added;
+      result.tolerance_reached = result.tolerance_reached && p.tolerance_reached;
+    }
+  }
+
+  auto proxy_of = [&](face_descriptor f) { return chart[get(fim, f)]; };
   std::size_t n = internal::make_charts_connected(tm, fim, chart);
   n = internal::merge_charts_within_tolerance(tm, geo, fim, tolerance, n, chart);
   internal::chart_errors(tm, geo, fim, n, proxy_of, result.chart_error, result.chart_area);
   result.number_of_charts = n;
   result.max_chart_error = *std::max_element(result.chart_error.begin(), result.chart_error.end());
-  result.proxies_added = vsa.number_of_proxies() - first_proxies;
   typedef typename boost::property_traits<FaceChartMap>::value_type Id;
   for(face_descriptor f : faces(tm)) put(face_chart, f, static_cast<Id>(chart[get(fim, f)]));
   result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
