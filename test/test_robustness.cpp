@@ -743,6 +743,9 @@ BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
   const auto d0 = QD::compute_distortion(cap, uv0.pmap_const());
   // the cap's ARAP map from LPFB+IP; at a power of two beyond the range, the
   // same map times the scale, to the last bit
+  Uv_store<Surface_mesh> border0;
+  const QD::Free_boundary_result b0 = QD::compute_length_preserved_free_boundary(cap, border0.pmap());
+  BOOST_REQUIRE(b0);
   Uv_store<Surface_mesh> optimized0 = uv0;
   const QD::Optimization_result o0 = QD::optimize_flattening(cap, optimized0.pmap());
   BOOST_REQUIRE(o0);
@@ -760,6 +763,12 @@ BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
     std::size_t different = 0;
     for(const auto v : vertices(m))
       for(int k = 0; k < 2; ++k) different += uv.at(v)[k] == optimized0.at(v)[k] * scale ? 0 : 1;
+    BOOST_TEST(different == 0u);
+    Uv_store<Surface_mesh> border;
+    BOOST_REQUIRE(QD::compute_length_preserved_free_boundary(m, border.pmap()));
+    BOOST_REQUIRE(border.map.size() == border0.map.size());
+    for(const auto& e : border0.map)
+      for(int k = 0; k < 2; ++k) different += border.at(e.first)[k] == border0.at(e.first)[k] * scale ? 0 : 1;
     BOOST_TEST(different == 0u);
   }
   for(const double scale : {1e-300, 1e-200, 1e200, 1e300}) {
@@ -793,11 +802,18 @@ BOOST_AUTO_TEST_CASE(flattening_and_measures_in_any_finite_range)
       BOOST_TEST(error < 1e-6);
       BOOST_TEST(close(o.energy_after, o0.energy_after, 1e-3));
 
-      // functions without the scaling refuse such coordinates by name
+      // and compute_length_preserved_free_boundary(): the border of scale 1 times the scale
       Uv_store<Surface_mesh> border;
-      BOOST_TEST((QD::compute_length_preserved_free_boundary(m, border.pmap()).status ==
-                  QD::Error_code::COORDINATES_OUT_OF_RANGE));
-      BOOST_TEST(border.map.empty());
+      const QD::Free_boundary_result b = QD::compute_length_preserved_free_boundary(m, border.pmap());
+      BOOST_REQUIRE_MESSAGE(b, QD::error_message(b.status));
+      BOOST_REQUIRE(border.map.size() == border0.map.size());
+      error = 0;
+      for(const auto& e : border0.map)
+        for(int k = 0; k < 2; ++k) error = (std::max)(error, std::abs(border.at(e.first)[k] / scale - border0.at(e.first)[k]));
+      BOOST_TEST(error < 1e-9);
+      BOOST_TEST(b.boundary_length_error / scale < 1e-12);
+
+      // the steps of the segmentation called on their own refuse such coordinates by name
       Surface_mesh copy = m;
       auto chart = copy.add_property_map<Surface_mesh::Face_index, std::size_t>("f:c", 0).first;
       BOOST_TEST((QD::segment_by_error_controlled_vsa(copy, chart).status == QD::Error_code::COORDINATES_OUT_OF_RANGE));

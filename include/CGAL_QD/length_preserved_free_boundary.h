@@ -14,6 +14,7 @@
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/lpfb_solver.h>
+#include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/internal/virtual_cut.h>
 
@@ -199,8 +200,8 @@ Free_boundary_result compute_length_preserved_free_boundary_np(
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   if(faces(tm).empty()) {
@@ -208,8 +209,16 @@ Free_boundary_result compute_length_preserved_free_boundary_np(
     r.status = Error_code::EMPTY_MESH;
     return r;
   }
-  return length_preserved_free_boundary_impl(tm, *faces(tm).begin(), true, border, uv, vpm, vim, fim,
-                                             lpfb_options_from(np));
+  // coordinates beyond [2^-64, 2^64] are solved scaled by a power of two,
+  // which is exact (internal/point_scale.h); the UVs and lengths scaled back
+  const double scale = normalizing_scale(largest_coordinate(vertices(tm), input_vpm));
+  const Scaled_point_map<typename std::remove_const<decltype(input_vpm)>::type> vpm{input_vpm, scale};
+  Free_boundary_result r = length_preserved_free_boundary_impl(
+      tm, *faces(tm).begin(), true, border, Scaled_uv_map<VertexUVMap>{uv, 1. / scale}, vpm, vim, fim,
+      lpfb_options_from(np));
+  r.boundary_length_error /= scale;
+  r.cut_length /= scale;
+  return r;
 }
 
 } // namespace internal
@@ -225,6 +234,10 @@ Free_boundary_result compute_length_preserved_free_boundary_np(
 /// to the outer loop and every copy of a vertex on the cut border is kept at one
 /// position. The layout is oriented like the mesh: the outer loop runs
 /// counter-clockwise when the faces are oriented counter-clockwise.
+///
+/// Coordinates whose largest |value| is beyond [2^-64, 2^64] are solved scaled
+/// by a power of two, which is exact; the UVs, `boundary_length_error` and
+/// `cut_length` are in the units of the mesh.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `WritablePropertyMap` with
@@ -244,8 +257,7 @@ Free_boundary_result compute_length_preserved_free_boundary_np(
 ///   - `CGAL_QD::parameters::use_line_search`: globalise the steps (default: true)
 ///
 /// \returns a `Free_boundary_result` whose `status` is `Error_code::OK` on success;
-/// otherwise `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`, `NON_MANIFOLD`,
-/// `COORDINATES_OUT_OF_RANGE`, `NOT_CONNECTED`, `NO_BORDER`, `NOT_A_DISK`, `INVALID_BORDER_HALFEDGE`,
+/// otherwise `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`, `NON_MANIFOLD`, `NOT_CONNECTED`, `NO_BORDER`, `NOT_A_DISK`, `INVALID_BORDER_HALFEDGE`,
 /// `DEGENERATE_EDGE`, `DEGENERATE_FACE`, `NOT_CONVERGED` or `SOLVER_FAILED`, and `uv` is untouched.
 ///
 /// \sa `LPFB_border_parameterizer_3`
