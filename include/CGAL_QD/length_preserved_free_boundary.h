@@ -257,8 +257,9 @@ Free_boundary_result compute_length_preserved_free_boundary_np(
 ///   - `CGAL_QD::parameters::use_line_search`: globalise the steps (default: true)
 ///
 /// \returns a `Free_boundary_result` whose `status` is `Error_code::OK` on success;
-/// otherwise `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`, `NON_MANIFOLD`, `NOT_CONNECTED`, `NO_BORDER`, `NOT_A_DISK`, `INVALID_BORDER_HALFEDGE`,
-/// `DEGENERATE_EDGE`, `DEGENERATE_FACE`, `NOT_CONVERGED` or `SOLVER_FAILED`, and `uv` is untouched.
+/// otherwise `EMPTY_MESH`, `NOT_TRIANGLE_MESH`, `INVALID_COORDINATES`, `NON_MANIFOLD`, `NOT_CONNECTED`,
+/// `NO_BORDER`, `NOT_A_DISK`, `INVALID_BORDER_HALFEDGE`, `DEGENERATE_EDGE`, `DEGENERATE_FACE`, `NOT_CONVERGED`
+/// or `SOLVER_FAILED`, and `uv` is untouched.
 ///
 /// \sa `LPFB_border_parameterizer_3`
 template <class TriangleMesh, class VertexUVMap,
