@@ -1309,8 +1309,8 @@ std::size_t compare_with_cgal_vsa(const Surface_mesh& tm, const std::vector<QD::
     BOOST_TEST_REQUIRE(ours.fitted_to_charts(), name << ", " << step);
     const std::vector<std::size_t> chart = ours.proxy_of();
     std::vector<double> error, area, fitted_error, fitted_area;
-    QD::internal::chart_errors(tm, geo, fim, ours.number_of_proxies(),
-                               [&](Surface_mesh::Face_index f) { return chart[get(fim, f)]; }, error, area);
+    QD::internal::chart_errors(geo, QD::internal::faces_in_order(tm, fim), chart, ours.number_of_proxies(), error,
+                               area);
     ours.chart_errors(fitted_error, fitted_area);
     BOOST_TEST((fitted_error == error), name << ", " << step << ": the charts' errors differ");
     BOOST_TEST((fitted_area == area), name << ", " << step << ": the charts' areas differ");

@@ -116,17 +116,6 @@ inline void chart_errors(const std::vector<Face_geometry>& geo, const std::vecto
   for(std::size_t k = 0; k < n_charts; ++k) error[k] = area[k] > 0 ? error[k] / area[k] : 0.;
 }
 
-// the same, the faces taken in the order of `faces(tm)`
-template <class TriangleMesh, class FIM, class ChartOf>
-void chart_errors(const TriangleMesh& tm, const std::vector<Face_geometry>& geo, const FIM& fim, std::size_t n_charts,
-                  const ChartOf& chart_of, std::vector<double>& error, std::vector<double>& area)
-{
-  const std::vector<std::size_t> order = faces_in_order(tm, fim);
-  std::vector<std::size_t> chart(geo.size(), 0);
-  for(auto f : faces(tm)) chart[get(fim, f)] = chart_of(f);
-  chart_errors(geo, order, chart, n_charts, error, area);
-}
-
 // The proxies of step 1 on one connected component: its faces' geometry,
 // their neighbours (indices into the same arrays) and their order. Proxies are
 // added where the error is worst until every chart of at least
@@ -360,6 +349,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   typedef typename std::remove_const<decltype(fim)>::type FIM;
   const std::vector<internal::Face_geometry> raw = internal::face_geometry(tm, vpm, fim);
   const std::vector<std::array<std::size_t, 3>> next_to = internal::face_neighbours(tm, fim);
+  const std::vector<std::size_t> order = internal::faces_in_order(tm, fim);
   // the scale of each connected component's shape: the diagonal of the
   // bounding box of its face centroids (a stray triangle far away, or a
   // second object, changes nothing in the others)
@@ -424,8 +414,8 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
   std::vector<std::size_t> chart(nf, 0);
   result.tolerance_reached = true;
   if(nc == 1) {
-    internal::Vsa_proxies p = internal::vsa_proxies(geo, next_to, internal::faces_in_order(tm, fim), tolerance,
-                                                    min_chart_area[0], cap[0], relaxations, parallel);
+    internal::Vsa_proxies p =
+        internal::vsa_proxies(geo, next_to, order, tolerance, min_chart_area[0], cap[0], relaxations, parallel);
     chart.swap(p.proxy_of);
     result.proxies_added = p.added;
     result.tolerance_reached = p.tolerance_reached;
@@ -435,7 +425,7 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     std::size_t proxies = 0;  // of the components before
     std::vector<std::vector<std::size_t>> members(nc);
     std::vector<std::size_t> local(nf);
-    for(std::size_t f : internal::faces_in_order(tm, fim)) {
+    for(std::size_t f : order) {
       local[f] = members[component[f]].size();
       members[component[f]].push_back(f);
     }
@@ -443,17 +433,17 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
       const std::vector<std::size_t>& m = members[c];
       std::vector<internal::Face_geometry> g(m.size());
       std::vector<std::array<std::size_t, 3>> next(m.size());
-      std::vector<std::size_t> order(m.size());
+      std::vector<std::size_t> own_order(m.size());
       for(std::size_t i = 0; i < m.size(); ++i) {
         g[i] = geo[m[i]];
         for(int k = 0; k < 3; ++k) {
           const std::size_t across = next_to[m[i]][k];
           next[i][k] = across == internal::Normal_vsa::none ? across : local[across];
         }
-        order[i] = i;
+        own_order[i] = i;
       }
       const internal::Vsa_proxies p =
-          internal::vsa_proxies(g, next, order, tolerance, min_chart_area[c], cap[c], relaxations, parallel);
+          internal::vsa_proxies(g, next, own_order, tolerance, min_chart_area[c], cap[c], relaxations, parallel);
       for(std::size_t i = 0; i < m.size(); ++i) chart[m[i]] = proxies + p.proxy_of[i];
       proxies += p.count;
       result.proxies_added += p.added;
@@ -461,10 +451,9 @@ Vsa_result segment_by_error_controlled_vsa(const TriangleMesh& tm, FaceChartMap 
     }
   }
 
-  auto proxy_of = [&](face_descriptor f) { return chart[get(fim, f)]; };
   std::size_t n = internal::make_charts_connected(tm, fim, chart);
   n = internal::merge_charts_within_tolerance(tm, geo, fim, tolerance, n, chart);
-  internal::chart_errors(tm, geo, fim, n, proxy_of, result.chart_error, result.chart_area);
+  internal::chart_errors(geo, order, chart, n, result.chart_error, result.chart_area);
   result.number_of_charts = n;
   result.max_chart_error = *std::max_element(result.chart_error.begin(), result.chart_error.end());
   typedef typename boost::property_traits<FaceChartMap>::value_type Id;
