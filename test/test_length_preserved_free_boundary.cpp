@@ -520,6 +520,51 @@ BOOST_AUTO_TEST_CASE(trial_converges_from_another_first_corner)
   }
 }
 
+// A merging trial of refined_elephant with one border of 1,763 corners: every run
+// from corner 0 reaches the limit, the run from the corner halfway round converges.
+// Its solution, checked in the order of corner 0, must still meet the tolerance:
+// with plainly summed angles (a sum of about 5,500 radians) the check found
+// 1.4e-11 > 1e-11, threw the solution away and reported NOT_CONVERGED.
+BOOST_AUTO_TEST_CASE(long_border_converges_from_another_first_corner)
+{
+  const QD::internal::Lpfb_problem pb = read_lpfb_problem("refined_elephant_trial_lpfb_problem.txt");
+  const std::size_t n = pb.target_angle.size();
+  BOOST_REQUIRE_EQUAL(n, 1763u);
+  QD::internal::Lpfb_options options;
+  options.restart_from_other_corners = false;
+  const QD::internal::Lpfb_solution from_0 = QD::internal::Lpfb_solver(pb).solve(options);
+  BOOST_TEST((from_0.status == QD::internal::Lpfb_status::NOT_CONVERGED));
+  const QD::internal::Lpfb_solution halfway =
+      QD::internal::Lpfb_solver(QD::internal::rotate_corner_order(pb, n / 2)).solve(options);
+  BOOST_REQUIRE((halfway.status == QD::internal::Lpfb_status::CONVERGED));
+
+  options.restart_from_other_corners = true;
+  const QD::internal::Lpfb_solution sol = QD::internal::Lpfb_solver(pb).solve(options);
+  BOOST_REQUIRE((sol.status == QD::internal::Lpfb_status::CONVERGED));
+  BOOST_TEST(sol.constraint_residual <= options.constraint_tolerance);
+  BOOST_REQUIRE_EQUAL(sol.theta.size(), n);
+  for(std::size_t i = 0; i < n; ++i) BOOST_TEST(sol.theta[(i + n / 2) % n] == halfway.theta[i]);
+  BOOST_TEST(std::abs(sol.objective - halfway.objective) <= 1e-12 * halfway.objective);
+  // the angle sum holds to the tolerance when summed in extended precision, in
+  // the order of corner 0 and in that of the corner halfway round
+  long double sum_0 = 0, sum_halfway = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    sum_0 += sol.theta[i];
+    sum_halfway += halfway.theta[i];
+  }
+  BOOST_TEST(std::abs(double(sum_0 - (long double)pb.group_sum[0])) <= options.constraint_tolerance);
+  BOOST_TEST(std::abs(double(sum_halfway - (long double)pb.group_sum[0])) <= options.constraint_tolerance);
+  // the layout closes to the tolerance
+  const auto& last = sol.position.back();
+  double turning = 0;
+  for(std::size_t k = 1; k < n; ++k) turning += pi - sol.theta[k];
+  const double x = last[0] + pb.edge_length[n - 1] * std::cos(turning);
+  const double y = last[1] + pb.edge_length[n - 1] * std::sin(turning);
+  BOOST_TEST(std::hypot(x, y) <= 1e-9 * std::accumulate(pb.edge_length.begin(), pb.edge_length.end(), 0.));
+  BOOST_TEST_MESSAGE("refined_elephant trial: " << sol.iterations << " iterations (" << from_0.iterations
+                                                << " from corner 0), objective " << sol.objective);
+}
+
 BOOST_AUTO_TEST_CASE(pig_component_with_three_loops_converges)
 {
   Surface_mesh tm;
