@@ -13,6 +13,7 @@
 #include <CGAL_QD/length_preserved_free_boundary.h>
 #include <CGAL_QD/internal/lower_triangle.h>
 #include <CGAL_QD/internal/point_scale.h>
+#include <CGAL_QD/internal/timing.h>
 #include <CGAL_QD/parameters.h>
 #include <CGAL_QD/internal/validation.h>
 #include <CGAL_QD/sparse_solvers.h>
@@ -89,11 +90,6 @@ struct Indexed_uv_map
 
 template <class T> const T& unwrap(const T& t) { return t; }
 template <class T> const T& unwrap(const std::reference_wrapper<T>& t) { return t.get(); }
-
-inline double milliseconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The symbolic analysis of the interior system, run on a second thread by a
 // solver that offers it (`Analyzes_ahead`) for a system of its size, while

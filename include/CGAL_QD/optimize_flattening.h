@@ -13,11 +13,11 @@
 /// triangle, it never creates one.
 
 #include <CGAL_QD/Error_code.h>
+#include <CGAL_QD/Optimization_result.h>
 #include <CGAL_QD/flatten_patch.h>
 #include <CGAL_QD/length_preserved_free_boundary.h>
 #include <CGAL_QD/parameters.h>
-#include <CGAL_QD/internal/anderson_acceleration.h>
-#include <CGAL_QD/internal/arap_optimizer.h>
+#include <CGAL_QD/internal/arap_iteration.h>
 #include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/internal/validation.h>
 
@@ -29,59 +29,11 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <memory>
 #include <vector>
 
 namespace CGAL_QD {
-
-/// \ingroup PkgCGAL_QDRef
-/// how `optimize_flattening()` treats the border of the patch.
-enum class Arap_border
-{
-  /// the border moves freely (the free-boundary ARAP of Liu et al. 2008)
-  FREE,
-  /// the border moves, and every border edge is pulled towards its target length (its 3D length, or
-  /// the one given by `CGAL_QD::parameters::border_edge_length_map`) with the weight
-  /// `CGAL_QD::parameters::border_length_weight`, relative to the cotangent weights of the faces
-  KEEP_LENGTHS,
-  /// the border vertices keep their given positions (for instance the LPFB border); only the interior moves
-  FIXED,
-  /// every border edge gets its exact target length (its 3D length, or the one given by
-  /// `CGAL_QD::parameters::border_edge_length_map`): `FREE`, then the length-preserved free boundary
-  /// whose target angles are the border angles of that map (instead of the surface's), then `FIXED`
-  /// with that border. Two pieces given the same lengths on the two sides of a seam match along it.
-  LENGTH_PRESERVED
-};
-
-/// \ingroup PkgCGAL_QDRef
-/// diagnostics of `optimize_flattening()`.
-struct Optimization_result
-{
-  Error_code status = Error_code::OK;
-  std::size_t iterations = 0;  ///< local/global iterations done
-  /// the ARAP energy sum_T sum_{edges ij of T} cot(alpha_ij) |(u_i - u_j) - R_T (x_i - x_j)|^2 divided by the
-  /// 3D area, before and after (0 for an isometry); with `CGAL_QD::parameters::area_preservation` > 0, the
-  /// same sum with every face's target map of determinant 1 in place of its rotation R_T
-  double energy_before = 0;
-  double energy_after = 0;
-  /// whether the input map had a flipped triangle (the optimisation may unfold it)
-  bool input_flipped = false;
-  /// iterations whose step was shortened so that no triangle flips
-  std::size_t shortened_steps = 0;
-  /// with `LENGTH_PRESERVED`: the status of the length-preserved free boundary fitted to the map
-  /// (`OK`, or `NOT_CONVERGED`, ...: then the map is the free one and `lengths_preserved` is false)
-  Error_code border_status = Error_code::OK;
-  /// with `LENGTH_PRESERVED`: whether every border edge has its target length (up to the border solver's tolerance)
-  bool lengths_preserved = false;
-  /// whether `CGAL_QD::parameters::iteration_callback` stopped the iteration
-  bool stopped_by_callback = false;
-  double time_ms = 0;
-
-  explicit operator bool() const { return status == Error_code::OK; }
-};
 
 namespace internal {
 
@@ -130,125 +82,6 @@ auto border_length_functor(const TriangleMesh&, const VPM&, const NamedParameter
 {
   auto map = CGAL::parameters::get_parameter(np, internal_np::border_edge_length_map_t());
   return Edge_length_from_map<decltype(map)>{map};
-}
-
-struct Arap_options
-{
-  std::size_t iterations = 30;
-  Arap_border border = Arap_border::LENGTH_PRESERVED;
-  double border_length_weight = 10.;
-  // stop when an iteration lowers the energy by less than this fraction
-  double relative_decrease = 1e-4;
-  double area_preservation = 0.;  // see Arap_optimizer
-  // the history of the Anderson acceleration (0: plain iteration)
-  std::size_t anderson_window = 0;
-};
-
-// no callback: the iteration never stops early
-struct No_iteration_callback
-{
-  bool operator()(std::size_t, const std::vector<std::array<double, 2>>&) const { return false; }
-};
-
-// Optimises `u` (by vertex index) in place; see `optimize_flattening()`.
-// `callback(iterations, u)` is called after every iteration; it stops the
-// iteration by returning true.
-template <class Solver, class Callback = No_iteration_callback>
-Optimization_result optimize_flattening_impl(std::size_t nv, const std::vector<std::array<std::size_t, 3>>& tri,
-                                             const std::vector<std::array<double, 3>>& p,
-                                             const std::vector<std::array<std::size_t, 2>>& border_edges,
-                                             const std::vector<double>& border_length,
-                                             std::vector<std::array<double, 2>>& u, const Arap_options& opt,
-                                             const Solver& solver, const Callback& callback = Callback())
-{
-  const auto start = std::chrono::steady_clock::now();
-  Optimization_result result;
-  Arap_optimizer<Solver> arap(nv, tri, p, border_edges, border_length,
-                              opt.border == Arap_border::KEEP_LENGTHS ? opt.border_length_weight : 0., solver,
-                              opt.area_preservation);
-  std::vector<char> fixed(nv, 0);
-  if(opt.border == Arap_border::FIXED) {
-    for(const auto& e : border_edges) fixed[e[0]] = fixed[e[1]] = 1;
-  } else if(nv > 0) {
-    fixed[tri.front()[0]] = 1;  // translation
-  }
-  if(!arap.factorize(fixed)) {
-    result.status = Error_code::SOLVER_FAILED;
-    result.time_ms = milliseconds_since(start);
-    return result;
-  }
-  double energy = arap.local_step(u);
-  result.energy_before = result.energy_after = energy;
-  result.input_flipped = arap.has_flip(u);
-  bool flip_free = !result.input_flipped;
-  std::vector<std::array<double, 2>> next, trial, accelerated;
-  std::unique_ptr<Anderson_acceleration> anderson;
-  if(opt.anderson_window > 0 && nv > 0)
-    anderson.reset(new Anderson_acceleration(Eigen::Index(2 * nv), Eigen::Index(opt.anderson_window)));
-  const auto as_vector = [nv](std::vector<std::array<double, 2>>& x) {
-    return Eigen::Map<Eigen::VectorXd>(x.front().data(), Eigen::Index(2 * nv));
-  };
-  for(std::size_t it = 0; it < opt.iterations; ++it) {
-    if(!arap.global_step(u, next)) {
-      result.status = Error_code::SOLVER_FAILED;
-      break;
-    }
-    bool shortened = false;
-    // once the map is flip-free, a step that would flip a face is shortened
-    if(flip_free && arap.has_flip(next)) {
-      shortened = true;
-      double t = 0.5;
-      bool found = false;
-      for(int k = 0; k < 10 && !found; ++k, t *= 0.5) {
-        trial = u;
-        for(std::size_t i = 0; i < nv; ++i)
-          for(int c = 0; c < 2; ++c) trial[i][c] = (1 - t) * u[i][c] + t * next[i][c];
-        found = !arap.has_flip(trial);
-      }
-      ++result.shortened_steps;
-      if(!found) break;
-      next.swap(trial);
-    }
-    // once the map is flip-free, the accelerated point replaces the plain
-    // step where it keeps the map flip-free and has a lower energy; otherwise
-    // the history starts again (a map with flipped faces unfolds by plain
-    // steps: accelerated, it may settle with its folds)
-    bool have_energy = false;
-    double e = 0;
-    if(anderson && flip_free) {
-      accelerated.resize(nv);
-      auto out = as_vector(accelerated);
-      if(shortened) {
-        anderson->reset();  // a shortened step is no image of the map
-      } else if(anderson->compute(as_vector(u), as_vector(next), out)) {
-        if(out.allFinite() && !arap.has_flip(accelerated)) {
-          e = arap.local_step(accelerated);
-          if(e < energy) {
-            next.swap(accelerated);
-            have_energy = true;
-          } else {
-            anderson->reset();
-          }
-        } else {
-          anderson->reset();
-        }
-      }
-    }
-    u.swap(next);
-    ++result.iterations;
-    if(callback(result.iterations, u)) {
-      result.stopped_by_callback = true;
-      break;
-    }
-    flip_free = flip_free || !arap.has_flip(u);
-    if(!have_energy) e = arap.local_step(u);
-    const bool small = energy - e <= opt.relative_decrease * energy;
-    energy = e;
-    if(small) break;
-  }
-  result.energy_after = energy;
-  result.time_ms = milliseconds_since(start);
-  return result;
 }
 
 } // namespace internal
