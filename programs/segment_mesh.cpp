@@ -19,6 +19,7 @@
 // what is wrong, exit code 1 and no output. `segment_mesh --help` lists every
 // option with its default and unit.
 
+#include "output_files.h"
 #include "segment_mesh_options.h"
 #include "segment_mesh_report.h"
 
@@ -46,7 +47,6 @@
 #include <functional>
 #include <future>
 #include <iostream>
-#include <memory>
 #include <sstream>
 #include <system_error>
 #include <string>
@@ -77,66 +77,6 @@ int fail(const std::string& message)
   std::cerr << "segment_mesh: " << message << "\n";
   return EXIT_FAILURE;
 }
-
-// Files written next to their final names and renamed into place together
-// once every one is complete: a failed run leaves none of its files behind
-// (those of an earlier run into the same directory stay as they were).
-class Output_files
-{
-public:
-  explicit Output_files(const std::filesystem::path& dir) : m_dir(dir) {}
-  ~Output_files() { discard(); }
-
-  // the directory, created if needed; otherwise why not
-  std::string open()
-  {
-    std::error_code ec;
-    m_created = !std::filesystem::exists(m_dir, ec) && std::filesystem::create_directories(m_dir, ec);
-    if(ec) return ec.message();
-    if(!std::filesystem::is_directory(m_dir, ec)) return "it is not a directory";
-    return std::string();
-  }
-  std::ofstream& file(const std::string& name)
-  {
-    m_names.push_back(name);
-    m_streams.emplace_back(new std::ofstream(part(name), std::ios::binary));
-    return *m_streams.back();
-  }
-  // true if every file was written and moved into place
-  bool commit()
-  {
-    for(auto& s : m_streams) {
-      s->close();
-      if(!*s) return false;
-    }
-    std::error_code ec;
-    for(const std::string& name : m_names) {
-      std::filesystem::rename(part(name), m_dir / name, ec);
-      if(ec) return false;
-      m_moved.push_back(name);
-    }
-    m_names.clear();
-    m_moved.clear();
-    m_created = false;
-    return true;
-  }
-
-private:
-  std::filesystem::path part(const std::string& name) const { return m_dir / ("." + name + ".part"); }
-  void discard()
-  {
-    std::error_code ec;
-    m_streams.clear();
-    for(const std::string& name : m_names) std::filesystem::remove(part(name), ec);
-    for(const std::string& name : m_moved) std::filesystem::remove(m_dir / name, ec);  // a half-done commit
-    if(m_created) std::filesystem::remove(m_dir, ec);  // only if it is empty again
-  }
-
-  std::filesystem::path m_dir;
-  bool m_created = false;
-  std::vector<std::string> m_names, m_moved;
-  std::vector<std::unique_ptr<std::ofstream>> m_streams;
-};
 
 } // namespace
 
@@ -192,6 +132,13 @@ int main(int argc, char** argv)
     return fail("--notches: '" + o.notches + "' is not a positive length such as 50mm or 2in");
   if(!o.seam_allowance.empty() && !((pattern.seam_allowance = length(o.seam_allowance)) > 0))
     return fail("--seam-allowance: '" + o.seam_allowance + "' is not a positive length such as 6mm or 0.25in");
+  {  // a length, or zero with or without a unit
+    char* end = nullptr;
+    const double value = std::strtod(o.min_loose_piece.c_str(), &end);
+    const bool zero = end != o.min_loose_piece.c_str() && value == 0 && length("1" + std::string(end)) > 0;
+    if(!zero && !((pattern.min_loose_piece_size = length(o.min_loose_piece)) > 0))
+      return fail("--min-loose-piece: '" + o.min_loose_piece + "' is not a length such as 2mm or 0.1in, or 0");
+  }
   // the shortest fold line: a length, a share of the model's size on the page
   // (0% to 100%), or zero with or without a unit (every bending edge drawn)
   {
@@ -330,7 +277,7 @@ int main(int argc, char** argv)
   std::string written;
   if(!o.out_dir.empty()) {
     const std::filesystem::path dir(o.out_dir);
-    Output_files files(dir);
+    segment_mesh::Output_files files(dir);
     const std::string problem = files.open();
     if(!problem.empty()) return fail("cannot write into '" + o.out_dir + "': " + problem);
     const CGAL_QD::Atlas_result atlas = CGAL_QD::pack_charts(out_mesh, out_chart, r.corner_uv);
@@ -411,6 +358,12 @@ int main(int argc, char** argv)
               << " so that every piece fits on a page";
     if(pattern.scale == 0 && pattern.model_size == 0) message << "; --size or --scale to change";
     if(pages.notches > 0) message << ", " << pages.notches << " notches";
+    if(!pages.left_out_pieces.empty()) {
+      const std::size_t count = pages.left_out_pieces.size();
+      message << "; " << count << (count == 1 ? " loose piece" : " loose pieces") << " shorter than "
+              << segment_mesh::text(pattern.min_loose_piece_size) << ' ' << pattern.units
+              << " left out, --min-loose-piece 0 draws " << (count == 1 ? "it" : "them");
+    }
     if(pages.oversized_charts > 0)
       message << ", " << pages.oversized_charts << (pages.oversized_charts == 1 ? " piece" : " pieces")
               << " larger than a page, printed in parts on " << pages.part_pages

@@ -36,6 +36,7 @@ struct Options
   std::string min_fold_length = "5%";  // a length with its unit, or a share of the model's size
   std::string notches;  // the spacing of the notches, a length with its unit
   std::string seam_allowance;  // a length with its unit
+  std::string min_loose_piece = "2mm";  // a length with its unit, or 0
   // the segmentation
   double vsa_tolerance = 0.25;
   double max_area_distortion = 0.10;
@@ -160,6 +161,14 @@ inline void add_options(CLI::App& app, Options& o)
                  "are small bends that paper takes by bending. 0: every edge that bends more than --fold-angle")
       ->type_name("LENGTH")
       ->default_str("5%")
+      ->group(pattern);
+  app.add_option("--min-loose-piece", o.min_loose_piece,
+                 "Leave off the pattern the loose pieces (each a whole part of the mesh, sewn to no other piece) "
+                 "shorter than LENGTH on the page (2mm, 0.1in; a bare number is in --units), unless that would "
+                 "leave none: specks a scan leaves beside a model, too small to cut. They stay in the atlas and "
+                 "the meshes. 0: every piece")
+      ->type_name("LENGTH")
+      ->default_str("2mm")
       ->group(pattern);
   app.add_flag("!--no-assembly-page", o.assembly_page,
                "Leave out the last page, which lists the order in which to join the pieces")

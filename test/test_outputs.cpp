@@ -719,6 +719,84 @@ BOOST_AUTO_TEST_CASE(patterns_list_the_assembly_order)
   }
 }
 
+// Loose pieces too small to cut (the specks a scan leaves beside a model) are
+// left off the pattern and out of the assembly, the others kept: the torus's
+// pieces beside five loose triangles 1 mm across on the page and one 100 mm
+// across. With the bound 0 every piece is drawn; a pattern of specks alone
+// is drawn whole.
+BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
+{
+  const Segmented& s = meshes().front();
+  Surface_mesh tm = s.tm;
+  Chart_map chart = s.chart;
+  std::vector<std::array<double, 2>> corner_uv = s.result.corner_uv;
+  const std::size_t torus_pieces = s.result.number_of_charts;
+  // a triangle in the plane z = 10 of side `side` with its corner at (x, 0), as a chart of its own
+  auto add_loose_triangle = [&](Surface_mesh& m, Chart_map& c, std::vector<std::array<double, 2>>& uv, double x,
+                                double side) {
+    const auto a = m.add_vertex(Epick::Point_3(x, 0, 10)), b = m.add_vertex(Epick::Point_3(x + side, 0, 10)),
+               d = m.add_vertex(Epick::Point_3(x, side, 10));
+    const auto f = m.add_face(a, b, d);
+    BOOST_REQUIRE(f != Surface_mesh::null_face());
+    c[f] = c.empty() ? 0 : std::max_element(c.begin(), c.end(), [](const auto& p, const auto& q) {
+                             return p.second < q.second;
+                           })->second + 1;
+    BOOST_REQUIRE_EQUAL(uv.size(), 3 * std::size_t(f));
+    auto h = halfedge(f, m);
+    for(int k = 0; k < 3; ++k, h = next(h, m)) uv.push_back({{m.point(target(h, m)).x(), m.point(target(h, m)).y()}});
+    return c[f];
+  };
+  std::vector<std::size_t> specks;
+  for(int i = 0; i < 5; ++i) specks.push_back(add_loose_triangle(tm, chart, corner_uv, 5. + i, 0.01));
+  const std::size_t large = add_loose_triangle(tm, chart, corner_uv, 12., 1.);
+  const auto chart_map = boost::make_assoc_property_map(chart);
+
+  QD::IO::Pattern_options options;
+  options.scale = 100;  // the specks 1 mm, the large triangle 100 mm
+  options.min_loose_piece_size = 2;
+  std::stringstream ss;
+  const QD::IO::Pattern_result pr =
+      QD::IO::write_patterns_SVG(ss, tm, chart_map, corner_uv, s.result.seam_edges, options);
+  BOOST_REQUIRE(pr);
+  BOOST_TEST(pr.left_out_pieces == specks, boost::test_tools::per_element());
+  BOOST_TEST(pr.number_of_charts == torus_pieces + 1);
+  BOOST_TEST(pr.assembly.size() == torus_pieces + 1);
+  std::set<std::size_t> in_assembly;
+  for(const QD::IO::Assembly_step& step : pr.assembly) in_assembly.insert(step.piece);
+  BOOST_TEST(in_assembly.count(large) == 1u);
+  const Drawn_pattern d = parse_pattern(ss, tm, options.scale, pr.number_of_pages);
+  std::set<std::size_t> drawn;
+  for(const Drawn_piece& piece : d.pieces) drawn.insert(piece.chart);
+  BOOST_TEST(drawn.size() == torus_pieces + 1);
+  BOOST_TEST(drawn.count(large) == 1u);
+  for(std::size_t k : specks) {
+    BOOST_TEST(drawn.count(k) == 0u);
+    BOOST_TEST(in_assembly.count(k) == 0u);
+  }
+
+  // the bound 0: every piece, each a step of the assembly
+  options.min_loose_piece_size = 0;
+  std::stringstream all;
+  const QD::IO::Pattern_result pa = QD::IO::write_patterns_SVG(all, tm, chart_map, corner_uv, s.result.seam_edges, options);
+  BOOST_REQUIRE(pa);
+  BOOST_TEST(pa.left_out_pieces.empty());
+  BOOST_TEST(pa.number_of_charts == torus_pieces + 6);
+  BOOST_TEST(pa.assembly.size() == torus_pieces + 6);
+
+  // specks alone: none is left out, since nothing would be drawn
+  Surface_mesh dust;
+  Chart_map dust_chart;
+  std::vector<std::array<double, 2>> dust_uv;
+  for(int i = 0; i < 3; ++i) add_loose_triangle(dust, dust_chart, dust_uv, i, 0.01);
+  options.min_loose_piece_size = 2;
+  std::stringstream ds;
+  const QD::IO::Pattern_result pd = QD::IO::write_patterns_SVG(
+      ds, dust, boost::make_assoc_property_map(dust_chart), dust_uv, std::vector<Surface_mesh::Edge_index>(), options);
+  BOOST_REQUIRE(pd);
+  BOOST_TEST(pd.left_out_pieces.empty());
+  BOOST_TEST(pd.number_of_charts == 3u);
+}
+
 // the two sides of every seam as drawn: with the paper's criterion every
 // border edge keeps its 3D length, so every seam matches; one piece drawn 2 %
 // larger leaves exactly its seams with the other pieces unmatched, 2 % apart,
@@ -1066,6 +1144,11 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   bad.min_fold_length = -1;
   expect_refused(bad);
   bad.min_fold_length = std::numeric_limits<double>::infinity();
+  expect_refused(bad);
+  bad = QD::IO::Pattern_options();
+  bad.min_loose_piece_size = -1;
+  expect_refused(bad);
+  bad.min_loose_piece_size = std::numeric_limits<double>::quiet_NaN();
   expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.min_fold_share = -0.1;

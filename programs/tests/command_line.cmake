@@ -18,7 +18,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--min-fold-length LENGTH=5%" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--min-fold-length LENGTH=5%" "--min-loose-piece LENGTH=2mm" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--area-preservation ALPHA:0..1=0.5" "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--no-shorten-cuts" "--sequential" "--json" "--verbose"
@@ -52,6 +52,8 @@ set(cases
   "--min-fold-length -1mm|--min-fold-length: '-1mm' is not a length"
   "--min-fold-length 150%|--min-fold-length: '150%' is not a length"
   "--seam-allowance 6furlongs|--seam-allowance: '6furlongs' is not a positive length"
+  "--min-loose-piece 2furlongs|--min-loose-piece: '2furlongs' is not a length"
+  "--min-loose-piece -1mm|--min-loose-piece: '-1mm' is not a length"
   "--out-dir|--out-dir"
 )
 set(k 0)
@@ -158,6 +160,10 @@ else()
     string(APPEND failures "report.json: seam_allowance '${drawn_allowance}'\n")
   endif()
   string(JSON pdf GET "${report}" patterns pdf)
+  string(JSON left LENGTH "${report}" patterns left_out_pieces)
+  if(NOT left EQUAL 0)
+    string(APPEND failures "report.json: ${left} loose pieces left out of a mesh in one piece\n")
+  endif()
   # the assembly: every piece joined once, the first one onto itself
   string(JSON charts GET "${report}" charts)
   string(JSON steps LENGTH "${report}" assembly)
@@ -217,6 +223,43 @@ foreach(unit 1 1e30)
                            "'${smoothing_status}', cut shortening '${shortening_status}'\n")
   endif()
   check_json_schema("${json}" "${schema}" "--json of the cube at ${unit}" failures)
+endforeach()
+
+# loose specks beside a model: the cube (12 cm on the page) with three loose
+# triangles 0.01 of its side across (1.2 mm) and one a third of it (4 cm):
+# the specks are left off the pattern and out of the assembly, and the
+# summary says so; with --min-loose-piece 0 every piece is drawn
+file(WRITE "${WORK_DIR}/cube_specks.off"
+     "OFF\n20 16 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+     "3 0 0\n3.01 0 0\n3 0.01 0\n4 0 0\n4.01 0 0\n4 0.01 0\n5 0 0\n5.01 0 0\n5 0.01 0\n"
+     "6 0 0\n6.33 0 0\n6 0.33 0\n"
+     "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n"
+     "3 8 9 10\n3 11 12 13\n3 14 15 16\n3 17 18 19\n")
+foreach(bound 2mm 0)
+  execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/cube_specks.off" --no-merge --scale 120 --min-loose-piece ${bound}
+                          --out-dir "${WORK_DIR}/cube_specks_${bound}"
+                  RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
+  if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/cube_specks_${bound}/report.json")
+    string(APPEND failures "the cube with specks, --min-loose-piece ${bound}: exit code ${code}, stderr '${err}'\n")
+    continue()
+  endif()
+  file(READ "${WORK_DIR}/cube_specks_${bound}/report.json" report)
+  check_json_schema("${report}" "${schema}" "report.json of the cube with specks" failures)
+  string(JSON charts GET "${report}" charts)
+  string(JSON left LENGTH "${report}" patterns left_out_pieces)
+  string(JSON steps LENGTH "${report}" assembly)
+  set(expected_left 0)
+  if(bound STREQUAL "2mm")
+    set(expected_left 3)
+    if(NOT summary MATCHES "; 3 loose pieces shorter than 2 mm left out, --min-loose-piece 0 draws them")
+      string(APPEND failures "the cube with specks: the summary does not say the specks were left out: ${summary}\n")
+    endif()
+  endif()
+  math(EXPR expected_steps "${charts} - ${expected_left}")
+  if(NOT charts EQUAL 10 OR NOT left EQUAL expected_left OR NOT steps EQUAL expected_steps)
+    string(APPEND failures "the cube with specks, --min-loose-piece ${bound}: ${charts} charts, ${left} left out, "
+                           "${steps} assembly steps\n")
+  endif()
 endforeach()
 
 if(failures)

@@ -81,6 +81,11 @@ struct Pattern_options
   /// a seam allowance this wide around every piece (0: none): the cut line then runs this far outside
   /// the piece's border, which becomes a dashed stitch line; needs Clipper (`CGAL_QD_HAS_CLIPPER`)
   double seam_allowance = 0;
+  /// a piece that is a whole connected component of the mesh (a loose part: it shares no seam with
+  /// another piece) and whose smallest enclosing rectangle has no side this long on the page is left off
+  /// the pattern and out of the assembly (`Pattern_result::left_out_pieces`), unless every piece would
+  /// be: the specks a scan leaves beside a model cannot be cut out. 0 (the default): every piece is drawn
+  double min_loose_piece_size = 0;
   /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
   bool assembly_page = true;
   /// the most pages a pattern may take: at a scale that would need more (pieces larger than a
@@ -162,7 +167,9 @@ struct Pattern_result
   /// than the one of the default model size, so that every piece fits on a page
   bool reduced_to_fit = false;
   std::size_t number_of_pages = 0;
-  std::size_t number_of_charts = 0;
+  std::size_t number_of_charts = 0;  ///< the pieces drawn
+  /// the loose pieces left out (`Pattern_options::min_loose_piece_size`), by chart id
+  std::vector<std::size_t> left_out_pieces;
   /// charts larger than a page (after turning them): each is printed in parts, a page's printable area
   /// each, on pages of its own, with marks to join them
   std::size_t oversized_charts = 0;

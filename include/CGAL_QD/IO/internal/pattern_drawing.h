@@ -4,19 +4,20 @@
 #ifndef CGAL_QD_IO_INTERNAL_PATTERN_DRAWING_H
 #define CGAL_QD_IO_INTERNAL_PATTERN_DRAWING_H
 
-// What a printed pattern shows, before it is written in a file format: the
-// scale, the pages, and for every piece its glue tabs, cut and fold lines,
-// seam labels and id, in drawing units on pages stacked downwards (page p
-// spans y in [p h, (p + 1) h]), y pointing down; a piece larger than a page
-// in parts (pattern_tiles.h). IO/patterns_svg.h and IO/patterns_pdf.h write it.
+// Computes what a printed pattern shows (pattern_pieces.h): the scale, the
+// pages, and for every piece its glue tabs, cut and fold lines, notches
+// (seam_notches.h), seam labels and id; a piece larger than a page in parts
+// (pattern_tiles.h). IO/patterns_svg.h and IO/patterns_pdf.h write it.
 
 #include <CGAL_QD/Error_code.h>
 #include <CGAL_QD/IO/internal/assembly_order.h>
 #include <CGAL_QD/IO/internal/assembly_page.h>
 #include <CGAL_QD/IO/internal/fold_lines.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
+#include <CGAL_QD/IO/internal/pattern_pieces.h>
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
+#include <CGAL_QD/IO/internal/seam_notches.h>
 #include <CGAL_QD/IO/pattern_options.h>
 #ifdef CGAL_QD_HAS_CLIPPER
 #include <CGAL_QD/IO/internal/seam_allowance.h>
@@ -47,52 +48,6 @@
 
 namespace CGAL_QD {
 namespace internal {
-
-struct Pattern_drawing
-{
-  typedef std::array<double, 2> P2;
-  enum Line_kind { CUT, MOUNTAIN, VALLEY, NOTCH };
-  struct Line
-  {
-    Line_kind kind;
-    P2 a, b;
-    std::array<std::size_t, 2> vertices;  // of a cut: the numbers of its vertices in the mesh
-  };
-  struct Text
-  {
-    P2 at;         // its centre
-    double size;   // its height
-    double angle;  // in degrees, clockwise on the page
-    std::string text;
-    bool centred = true;  // or starting at `at`, centred in height
-  };
-  struct Piece
-  {
-    std::size_t chart = 0, page = 0;
-    std::vector<std::array<P2, 4>> tabs;  // drawn under the piece
-    std::vector<Line> lines;              // cut and fold lines
-    std::vector<Text> labels;             // of the seam curves
-    std::vector<Line> notches;            // from the cut line into the piece; `vertices` (seam, number)
-    std::vector<Text> notch_labels;       // their numbers
-    std::vector<std::vector<P2>> allowance;  // the outlines of the seam allowance: the cut lines then
-    Text id;                              // the chart id, at the centre of its box
-    // a piece larger than a page: the parts printed (its drawing is shown only
-    // through them), and the diamonds across the lines where they meet
-    std::vector<Pattern_part> parts;
-    std::vector<std::array<P2, 4>> marks;
-    std::vector<Text> mark_labels;
-  };
-  std::string units;
-  double page_width = 0, page_height = 0, page_margin = 0;
-  std::size_t number_of_pages = 0;
-  double line_width = 0;  // of the cut lines
-  double seam_allowance = 0;
-  double font_size = 0;   // the largest label height
-  double millimetre = 1;  // in drawing units
-  std::vector<Piece> pieces;  // in drawing order
-  std::vector<Text> assembly;  // the lines of the assembly page
-  std::vector<Text> captions;  // on the pages of parts, in the top margin
-};
 
 // computes the drawing of `write_patterns_SVG()` and `write_patterns_PDF()`
 // (see there); nothing is drawn unless the result's status is OK
@@ -146,7 +101,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                finite_at_least(options.font_size, 0) && finite_at_least(options.notch_spacing, 0) &&
                finite_at_least(options.seam_allowance, 0) &&
                std::isfinite(options.fold_angle) && finite_at_least(options.min_fold_length, 0) &&
-               finite_at_least(options.min_fold_share, 0) &&
+               finite_at_least(options.min_fold_share, 0) && finite_at_least(options.min_loose_piece_size, 0) &&
                std::isfinite(options.page_width) && std::isfinite(options.page_height) &&
                options.page_width > 2 * options.page_margin && options.page_height > 2 * options.page_margin;
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
@@ -236,6 +191,28 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     }
   }
   result.model_size = result.scale * extent;
+  // loose pieces (each a whole connected component of the mesh) shorter on
+  // the page than `min_loose_piece_size` are left out, unless none would be left
+  if(options.min_loose_piece_size > 0) {
+    std::vector<bool> joined(n, false);
+    for(std::size_t i = 0; i < nf; ++i)
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm))
+        if(!is_border(opposite(h, tm), tm) && chart[get(fim, face(opposite(h, tm), tm))] != chart[i])
+          joined[chart[i]] = true;
+    std::vector<std::size_t> small;
+    bool any_left = false;
+    for(std::size_t k = 0; k < n; ++k) {
+      if(!used[k]) continue;
+      if(!joined[k] && result.scale * (std::max)(boxes[k].size[0], boxes[k].size[1]) < options.min_loose_piece_size)
+        small.push_back(k);
+      else
+        any_left = true;
+    }
+    if(any_left) {
+      for(std::size_t k : small) used[k] = false;
+      result.left_out_pieces = small;
+    }
+  }
   const double min_fold_length = result.min_fold_length =
       options.min_fold_length > 0 ? options.min_fold_length : options.min_fold_share * result.model_size;
   const internal::Page_layout layout =
@@ -294,9 +271,15 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       labels_of_chart[chart[get(fim, face(h, tm))]].emplace_back(h, id);
     curve_length[id] = total;
   }
-  result.seam_labels = curves.size();
+  // the curves drawn: all but the cuts inside pieces left out (a loose piece has no other)
+  std::vector<char> drawn_curve(curves.size());
+  for(std::size_t id = 0; id < curves.size(); ++id) {
+    drawn_curve[id] = used[curve_charts[id].first] && used[curve_charts[id].second];
+    result.seam_labels += drawn_curve[id];
+  }
   // the two sides of every curve as drawn
   for(std::size_t id = 0; id < curves.size(); ++id) {
+    if(!drawn_curve[id]) continue;
     IO::Pattern_seam ps;
     ps.label = seam_label(id);
     for(int side = 0; side < 2; ++side) {
@@ -312,59 +295,11 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                  CGAL_QD::internal::matched_seam_tolerance * (std::max)(ps.sides[0], ps.sides[1]);
     result.seams.push_back(ps);
   }
-  // notches: at the same fractions of the 2D length of the two sides of every
-  // seam curve, so that they meet when the seam is sewn; numbered along the
-  // curve, from the same end on both sides
   std::vector<std::vector<std::pair<Pattern_drawing::Line, Pattern_drawing::Text>>> notches_of_chart(n);
   auto notch_length = [&](std::size_t k) { return (std::min)(3 * mm, smaller_side(k) / 8); };
   if(options.notch_spacing > 0)
-    for(std::size_t id = 0; id < curves.size(); ++id) {
-      const std::vector<halfedge_descriptor>& hs = curves[id];
-      const bool closed = target(hs.back(), tm) == source(hs.front(), tm) && hs.size() > 2;
-      // each side as a polyline along the curve, with the normal into its piece on every edge
-      struct Side
-      {
-        std::size_t chart;
-        std::vector<P2> points, normals;
-        std::vector<double> at;  // arc length at each point
-      } sides[2];
-      for(int side = 0; side < 2; ++side) {
-        Side& sd = sides[side];
-        sd.chart = chart[get(fim, face(side == 0 ? hs.front() : opposite(hs.front(), tm), tm))];
-        for(std::size_t i = 0; i < hs.size(); ++i) {
-          const halfedge_descriptor g = side == 0 ? hs[i] : opposite(hs[i], tm);
-          const P2 a = point_at(corner(prev(g, tm))), b = point_at(corner(g));  // g runs from a to b
-          const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
-          const P2 from = side == 0 ? a : b, to = side == 0 ? b : a;
-          if(i == 0) sd.points.push_back(from), sd.at.push_back(0);
-          sd.points.push_back(to);
-          sd.at.push_back(sd.at.back() + l);
-          sd.normals.push_back(l > 0 ? P2{{dy / l, -dx / l}} : P2{{0, 0}});
-        }
-      }
-      const double length = (sides[0].at.back() + sides[1].at.back()) / 2;
-      if(!(length > 0)) continue;
-      const std::size_t count = closed ? (std::max)(2., std::round(length / options.notch_spacing))
-                                       : (std::max)(1., std::round(length / options.notch_spacing) - 1);
-      for(const Side& sd : sides) {
-        const double tick = notch_length(sd.chart), number = (std::min)(0.6 * font, 2 * tick);
-        std::size_t e = 0;
-        for(std::size_t j = 1; j <= count; ++j) {
-          const double t = (closed ? double(j - 1) / count : double(j) / (count + 1)) * sd.at.back();
-          while(e + 1 < sd.normals.size() && sd.at[e + 1] < t) ++e;
-          const double span = sd.at[e + 1] - sd.at[e], u = span > 0 ? (t - sd.at[e]) / span : 0.;
-          const P2 q{{sd.points[e][0] + u * (sd.points[e + 1][0] - sd.points[e][0]),
-                      sd.points[e][1] + u * (sd.points[e + 1][1] - sd.points[e][1])}};
-          const P2& nn = sd.normals[e];
-          notches_of_chart[sd.chart].emplace_back(
-              Pattern_drawing::Line{Pattern_drawing::NOTCH, q, P2{{q[0] + tick * nn[0], q[1] + tick * nn[1]}},
-                                    {{id, j}}},
-              Pattern_drawing::Text{P2{{q[0] + (tick + 0.8 * number) * nn[0], q[1] + (tick + 0.8 * number) * nn[1]}},
-                                    number, 0., std::to_string(j)});
-          ++result.notches;
-        }
-      }
-    }
+    notches_of_chart = seam_notches(tm, curves, drawn_curve, chart, fim, n, options.notch_spacing, font, corner,
+                                    point_at, notch_length, result.notches);
   const std::vector<internal::Face_geometry> geo = internal::face_geometry(tm, vpm, fim);
   {
     std::vector<double> area(n, 0.);
