@@ -723,7 +723,7 @@ BOOST_AUTO_TEST_CASE(patterns_list_the_assembly_order)
 // left off the pattern and out of the assembly, the others kept: the torus's
 // pieces beside five loose triangles 1 mm across on the page and one 100 mm
 // across. With the bound 0 every piece is drawn; a pattern of specks alone
-// is drawn whole.
+// is drawn whole. The model's size leaves out the pieces left out.
 BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
 {
   const Segmented& s = meshes().front();
@@ -731,11 +731,11 @@ BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
   Chart_map chart = s.chart;
   std::vector<std::array<double, 2>> corner_uv = s.result.corner_uv;
   const std::size_t torus_pieces = s.result.number_of_charts;
-  // a triangle in the plane z = 10 of side `side` with its corner at (x, 0), as a chart of its own
+  // a triangle in the plane z of side `side` with its corner at (x, 0), as a chart of its own
   auto add_loose_triangle = [&](Surface_mesh& m, Chart_map& c, std::vector<std::array<double, 2>>& uv, double x,
-                                double side) {
-    const auto a = m.add_vertex(Epick::Point_3(x, 0, 10)), b = m.add_vertex(Epick::Point_3(x + side, 0, 10)),
-               d = m.add_vertex(Epick::Point_3(x, side, 10));
+                                double side, double z = 10) {
+    const auto a = m.add_vertex(Epick::Point_3(x, 0, z)), b = m.add_vertex(Epick::Point_3(x + side, 0, z)),
+               d = m.add_vertex(Epick::Point_3(x, side, z));
     const auto f = m.add_face(a, b, d);
     BOOST_REQUIRE(f != Surface_mesh::null_face());
     c[f] = c.empty() ? 0 : std::max_element(c.begin(), c.end(), [](const auto& p, const auto& q) {
@@ -795,6 +795,48 @@ BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
   BOOST_REQUIRE(pd);
   BOOST_TEST(pd.left_out_pieces.empty());
   BOOST_TEST(pd.number_of_charts == 3u);
+
+  // the model's size is that of the pieces drawn: the torus 200 mm long with
+  // five specks far from it left out, and a triangle in its hole, shorter
+  // than 2 mm at the scale of the whole mesh (4.3 mm per unit) but not at the
+  // torus's (37 mm per unit), drawn
+  Surface_mesh far = s.tm;
+  Chart_map far_chart = s.chart;
+  std::vector<std::array<double, 2>> far_uv = s.result.corner_uv;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for(auto v : vertices(s.tm)) low = (std::min)(low, s.tm.point(v).x()), high = (std::max)(high, s.tm.point(v).x());
+  const double torus_extent = high - low;
+  for(auto v : vertices(s.tm)) {  // x is the torus's longest side
+    BOOST_REQUIRE(std::abs(s.tm.point(v).y()) <= torus_extent / 2);
+    BOOST_REQUIRE(std::abs(s.tm.point(v).z()) <= torus_extent / 2);
+  }
+  std::vector<std::size_t> far_specks;
+  for(int i = 0; i < 5; ++i) far_specks.push_back(add_loose_triangle(far, far_chart, far_uv, 40. + i, 0.01));
+  const std::size_t in_hole = add_loose_triangle(far, far_chart, far_uv, 0., 0.1, 0.);
+  QD::IO::Pattern_options sized;
+  sized.model_size = 200;
+  sized.min_loose_piece_size = 2;
+  std::stringstream fs;
+  const QD::IO::Pattern_result pf =
+      QD::IO::write_patterns_SVG(fs, far, boost::make_assoc_property_map(far_chart), far_uv, s.result.seam_edges, sized);
+  BOOST_REQUIRE(pf);
+  BOOST_TEST(pf.left_out_pieces == far_specks, boost::test_tools::per_element());
+  BOOST_TEST(pf.number_of_charts == torus_pieces + 1);
+  BOOST_TEST(pf.model_size == 200., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(pf.scale == 200. / torus_extent, boost::test_tools::tolerance(1e-12));
+  const Drawn_pattern fd = parse_pattern(fs, far, pf.scale, pf.number_of_pages);
+  std::set<std::size_t> far_drawn;
+  for(const Drawn_piece& piece : fd.pieces) far_drawn.insert(piece.chart);
+  BOOST_TEST(far_drawn.count(in_hole) == 1u);
+  for(std::size_t k : far_specks) BOOST_TEST(far_drawn.count(k) == 0u);
+  // without the bound, the model is the whole mesh
+  sized.min_loose_piece_size = 0;
+  std::stringstream fa;
+  const QD::IO::Pattern_result pfa =
+      QD::IO::write_patterns_SVG(fa, far, boost::make_assoc_property_map(far_chart), far_uv, s.result.seam_edges, sized);
+  BOOST_REQUIRE(pfa);
+  BOOST_TEST(pfa.left_out_pieces.empty());
+  BOOST_TEST(pfa.scale == 200. / (44.01 - low), boost::test_tools::tolerance(1e-12));
 }
 
 // the two sides of every seam as drawn: with the paper's criterion every

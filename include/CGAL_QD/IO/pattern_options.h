@@ -42,9 +42,10 @@ struct Pattern_options
 {
   /// drawing units per mesh unit; 0 (the default): chosen from `model_size`
   double scale = 0;
-  /// with `scale` 0, the model's largest dimension (the longest side of its
-  /// axis-aligned bounding box) on paper; 0 (the default): 200 mm, made smaller
-  /// (to whole millimetres) where a piece would not fit on a page at that size
+  /// with `scale` 0, the model's largest dimension (the longest side of the
+  /// axis-aligned bounding box of the pieces drawn, without the loose pieces left
+  /// out by `min_loose_piece_size`) on paper; 0 (the default): 200 mm, made
+  /// smaller (to whole millimetres) where a piece would not fit on a page at that size
   double model_size = 0;
   /// the unit of the drawing (the SVG's width and height are in it): `mm`, `cm`, `in`, `pt`, `pc` or `px`
   std::string units = "mm";
@@ -84,7 +85,11 @@ struct Pattern_options
   /// a piece that is a whole connected component of the mesh (a loose part: it shares no seam with
   /// another piece) and whose smallest enclosing rectangle has no side this long on the page is left off
   /// the pattern and out of the assembly (`Pattern_result::left_out_pieces`), unless every piece would
-  /// be: the specks a scan leaves beside a model cannot be cut out. 0 (the default): every piece is drawn
+  /// be: the specks a scan leaves beside a model cannot be cut out. The model's size is then that of
+  /// the pieces drawn (`model_size`): the pieces shorter at the scale of the whole mesh are left out,
+  /// then those still shorter at the scale chosen for the others (larger where a speck lay apart from
+  /// the model), until every piece left out is shorter at the scale of the pieces drawn.
+  /// 0 (the default): every piece is drawn
   double min_loose_piece_size = 0;
   /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
   bool assembly_page = true;
@@ -161,7 +166,8 @@ struct Pattern_result
   Error_code status = Error_code::OK;
   /// the scale used, in drawing units per mesh unit
   double scale = 0;
-  /// the model's largest dimension (its longest bounding-box side) on paper, in drawing units
+  /// the model's largest dimension (the longest bounding-box side of the pieces drawn) on paper, in
+  /// drawing units
   double model_size = 0;
   /// whether the scale was chosen (`Pattern_options::scale` 0) and made smaller
   /// than the one of the default model size, so that every piece fits on a page

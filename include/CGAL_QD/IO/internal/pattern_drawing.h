@@ -15,6 +15,7 @@
 #include <CGAL_QD/IO/internal/fold_lines.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
+#include <CGAL_QD/IO/internal/pattern_scale.h>
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
 #include <CGAL_QD/IO/internal/seam_notches.h>
@@ -170,49 +171,26 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     used[k] = true;
   }
   const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0) + options.seam_allowance;
-  if(options.scale > 0) {
-    result.scale = options.scale;
-  } else {
-    const double size = options.model_size > 0 ? options.model_size : 200 * mm;
-    result.scale = size / extent;
-    if(options.model_size == 0) {
-      const double fit = internal::largest_fitting_scale(boxes, options.page_width - 2 * options.page_margin,
-                                                         options.page_height - 2 * options.page_margin, pad);
-      if(fit < result.scale) {
-        // whole millimetres, where that leaves at least one
-        const double whole = std::floor(fit * extent * mm_per_unit);
-        result.scale = whole >= 1 ? whole * mm / extent : fit;
-        result.reduced_to_fit = true;
-      }
+  // the scale, from the 3D bounding box of the pieces drawn, and the loose
+  // pieces left out (each a whole connected component of the mesh)
+  std::vector<internal::Box_3> box_3d(n, internal::empty_box_3());
+  std::vector<bool> loose(n, true);
+  for(std::size_t i = 0; i < nf; ++i)
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm)) {
+      internal::add_to_box_3(box_3d[chart[i]], CGAL_QD::internal::point_of<TriangleMesh>(target(h, tm), vpm));
+      if(!is_border(opposite(h, tm), tm) && chart[get(fim, face(opposite(h, tm), tm))] != chart[i])
+        loose[chart[i]] = false;
     }
-    if(!(std::isfinite(result.scale) && result.scale > 0)) {
-      result.status = Error_code::INVALID_COORDINATES;
-      return result;
-    }
+  internal::Pattern_scale scale = internal::choose_pattern_scale(boxes, box_3d, used, loose, options, mm_per_unit, pad);
+  result.scale = scale.scale;
+  result.reduced_to_fit = scale.reduced_to_fit;
+  if(!(std::isfinite(result.scale) && result.scale > 0)) {
+    result.status = Error_code::INVALID_COORDINATES;
+    return result;
   }
-  result.model_size = result.scale * extent;
-  // loose pieces (each a whole connected component of the mesh) shorter on
-  // the page than `min_loose_piece_size` are left out, unless none would be left
-  if(options.min_loose_piece_size > 0) {
-    std::vector<bool> joined(n, false);
-    for(std::size_t i = 0; i < nf; ++i)
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm))
-        if(!is_border(opposite(h, tm), tm) && chart[get(fim, face(opposite(h, tm), tm))] != chart[i])
-          joined[chart[i]] = true;
-    std::vector<std::size_t> small;
-    bool any_left = false;
-    for(std::size_t k = 0; k < n; ++k) {
-      if(!used[k]) continue;
-      if(!joined[k] && result.scale * (std::max)(boxes[k].size[0], boxes[k].size[1]) < options.min_loose_piece_size)
-        small.push_back(k);
-      else
-        any_left = true;
-    }
-    if(any_left) {
-      for(std::size_t k : small) used[k] = false;
-      result.left_out_pieces = small;
-    }
-  }
+  result.model_size = result.scale * scale.extent;
+  result.left_out_pieces.swap(scale.left_out);
+  used.swap(scale.drawn);
   const double min_fold_length = result.min_fold_length =
       options.min_fold_length > 0 ? options.min_fold_length : options.min_fold_share * result.model_size;
   const internal::Page_layout layout =
