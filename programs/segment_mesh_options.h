@@ -120,8 +120,9 @@ inline void add_options(CLI::App& app, Options& o)
   CLI::Option* size =
       app.add_option("--size", o.size,
                      "The model's largest dimension on the pattern (loose pieces left off by --min-loose-piece do not "
-                     "count), with its unit (200mm, 20cm, 8in; a bare number is in --units). Default: 200 mm, or less (to whole millimetres) so that every piece fits on "
-                     "a page; a piece larger than a page is printed in parts, with marks to join them")
+                     "count), with its unit (200mm, 20cm, 8in; a bare number is in --units). Default: 200 mm, or "
+                     "less (to whole millimetres) so that every piece fits on a page; a piece larger than a page is "
+                     "printed in parts, with marks to join them")
           ->type_name("LENGTH")
           ->group(pattern);
   app.add_option("--scale", o.scale, "Drawing units (--units) per mesh unit, instead of --size (default: the scale --size gives)")

@@ -46,19 +46,20 @@ inline void add_to_box_3(Box_3& b, const std::array<double, 3>& p)
   for(int c = 0; c < 3; ++c) b[c] = (std::min)(b[c], p[c]), b[c + 3] = (std::max)(b[c + 3], p[c]);
 }
 
-// The scale of a pattern and the pieces drawn. The scale is
-// `options.scale`, or the one that gives the pieces drawn the largest
-// dimension `options.model_size` (or 200 mm; `mm_per_unit` millimetres per
-// drawing unit), made smaller where that one does so that every piece drawn,
-// padded by `pad`, fits on a page. Per chart id k: `boxes[k]` is the smallest
-// rectangle of its flattening and `box_3d[k]` its 3D bounding box (mesh
-// units), `used[k]` whether it has faces, `loose[k]` whether it is a whole
-// connected component of the mesh. With `options.min_loose_piece_size`, the
-// loose pieces shorter than that on the page are left out, unless every piece
-// would be: those shorter at the scale of every piece, then, with the scale
-// chosen for the others (larger where a speck lay apart from the model), those
-// still shorter, and so on until every piece left out is shorter at the scale
-// of the pieces drawn.
+// The scale of a pattern and the pieces drawn. The scale is `options.scale`,
+// or the one that gives the pieces drawn the largest dimension
+// `options.model_size`; without either, the one that gives them 200 mm
+// (`mm_per_unit` millimetres per drawing unit), made smaller where needed so
+// that every piece drawn, padded by `pad`, fits on a page (to whole
+// millimetres where that leaves at least one). Per chart id k: `boxes[k]` is
+// the smallest rectangle of its flattening and `box_3d[k]` its 3D bounding
+// box (mesh units), `used[k]` whether it has faces, `loose[k]` whether it is
+// a whole connected component of the mesh. With
+// `options.min_loose_piece_size`, the loose pieces shorter than that on the
+// page are left out, unless every piece would be: those shorter at the scale
+// of every piece, then, with the scale chosen for the others (larger where a
+// speck lay apart from the model), those still shorter, and so on until every
+// piece left out is shorter at the scale of the pieces drawn.
 inline Pattern_scale choose_pattern_scale(const std::vector<Rectangle>& boxes, const std::vector<Box_3>& box_3d,
                                           const std::vector<bool>& used, const std::vector<bool>& loose,
                                           const IO::Pattern_options& options, double mm_per_unit, double pad)
