@@ -37,6 +37,7 @@
 // second-order correction at every step length tried; full steps are kept
 // whenever they decrease the merit.
 
+#include <CGAL_QD/internal/compensated_sum.h>
 #include <CGAL_QD/internal/constants.h>
 #include <CGAL_QD/internal/lpfb_hessian.h>
 #include <CGAL_QD/internal/lpfb_problem.h>
@@ -53,24 +54,6 @@
 
 namespace CGAL_QD {
 namespace internal {
-
-// A sum with the rounding error of each addition carried along (Neumaier's
-// variant of Kahan summation). The angle sum of a border of n corners is about
-// n pi; summed plainly, its rounding error grows with n and reaches the
-// constraint tolerance on long borders: a solution found from another first
-// corner (solve()) could fail the check made in the order of corner 0 (1.4e-11
-// against 1e-11 on a merging trial of 1,763 corners).
-struct Compensated_sum
-{
-  double sum = 0, error = 0;
-  void add(double x)
-  {
-    const double t = sum + x;
-    error += std::abs(sum) >= std::abs(x) ? (sum - t) + x : (x - t) + sum;
-    sum = t;
-  }
-  double value() const { return sum + error; }
-};
 
 class Lpfb_solver
 {
@@ -184,18 +167,12 @@ private:
 #endif
       if(viol <= opt.constraint_tolerance && step_size <= opt.angle_tolerance) {
         sol.status = Lpfb_status::CONVERGED;
-        // the last step, below the angle tolerance, is taken too: it meets
-        // the linearised constraints, so the closure residual, which the
-        // layout leaves in the edge that closes each loop, falls to the order
-        // of its square. A converged residual just below the tolerance
-        // (relative to the loop's length) is a relative error of the
-        // tolerance times the loop's length over that edge's (a patch of
-        // mannequin-devil: 2.0e-9, 3.8e-12 after this step). Taken always
-        // (unless it would leave the tolerance), not only where it lowers the
-        // violation: near rounding level that comparison is noise, and the
-        // same problem moved or scaled would end on another side of it. Nor
-        // where it would take an angle across 0 or 2 pi: a corner of a needle
-        // triangle (an angle far below the tolerance) would turn over.
+        // the last step (below the angle tolerance) taken too: it meets the
+        // linearised constraints, so the closure gap that the layout leaves
+        // in the edge closing each loop falls to the order of its square
+        // (manual, section 2.3). Not only where it lowers the violation (near
+        // rounding that is noise: a moved copy would end otherwise), and not
+        // where an angle would cross 0 or 2 pi (a needle triangle's corner).
         bool same_sides = true;
         for(std::size_t i = 0; i < n_; ++i) {
           trial[i] = theta[i] + delta[i];
