@@ -29,6 +29,7 @@
 #include <CGAL_QD/pack_charts.h>
 #include <CGAL_QD/segmentation_measures.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -40,7 +41,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -108,16 +108,13 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
     valid = std::isfinite(corner_uv[i][0]) && std::isfinite(corner_uv[i][1]);
   // the model's largest dimension
-  double extent = 0;
   if(valid) {
-    std::array<double, 3> low, high;
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
+    CGAL::Bbox_3 all;  // empty
     for(auto v : vertices(tm)) {
       const std::array<double, 3> p = CGAL_QD::internal::point_of<TriangleMesh>(v, vpm);
-      for(int c = 0; c < 3; ++c) low[c] = (std::min)(low[c], p[c]), high[c] = (std::max)(high[c], p[c]);
+      all += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
     }
-    for(int c = 0; c < 3; ++c) extent = (std::max)(extent, high[c] - low[c]);
+    const double extent = (std::max)({0., all.x_span(), all.y_span(), all.z_span()});
     valid = std::isfinite(extent) && extent > 0;
   }
   if(!valid) {
@@ -173,11 +170,12 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0) + options.seam_allowance;
   // the scale, from the 3D bounding box of the pieces drawn, and the loose
   // pieces left out (each a whole connected component of the mesh)
-  std::vector<internal::Box_3> box_3d(n, internal::empty_box_3());
+  std::vector<CGAL::Bbox_3> box_3d(n);  // empty
   std::vector<bool> loose(n, true);
   for(std::size_t i = 0; i < nf; ++i)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm)) {
-      internal::add_to_box_3(box_3d[chart[i]], CGAL_QD::internal::point_of<TriangleMesh>(target(h, tm), vpm));
+      const std::array<double, 3> p = CGAL_QD::internal::point_of<TriangleMesh>(target(h, tm), vpm);
+      box_3d[chart[i]] += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
       if(!is_border(opposite(h, tm), tm) && chart[get(fim, face(opposite(h, tm), tm))] != chart[i])
         loose[chart[i]] = false;
     }

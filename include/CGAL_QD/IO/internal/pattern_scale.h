@@ -12,11 +12,11 @@
 #include <CGAL_QD/IO/pattern_options.h>
 #include <CGAL_QD/pack_charts.h>
 
+#include <CGAL/Bbox_3.h>
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -32,20 +32,6 @@ struct Pattern_scale
   std::vector<std::size_t> left_out;  // the loose pieces left out, by chart id
 };
 
-// the 3D bounding box of a point set: low x, y, z, then high x, y, z
-typedef std::array<double, 6> Box_3;
-
-inline Box_3 empty_box_3()
-{
-  const double inf = std::numeric_limits<double>::infinity();
-  return {{inf, inf, inf, -inf, -inf, -inf}};
-}
-
-inline void add_to_box_3(Box_3& b, const std::array<double, 3>& p)
-{
-  for(int c = 0; c < 3; ++c) b[c] = (std::min)(b[c], p[c]), b[c + 3] = (std::max)(b[c + 3], p[c]);
-}
-
 // The scale of a pattern and the pieces drawn. The scale is `options.scale`,
 // or the one that gives the pieces drawn the largest dimension
 // `options.model_size`; without either, the one that gives them 200 mm
@@ -60,19 +46,17 @@ inline void add_to_box_3(Box_3& b, const std::array<double, 3>& p)
 // of every piece, then, with the scale chosen for the others (larger where a
 // speck lay apart from the model), those still shorter, and so on until every
 // piece left out is shorter at the scale of the pieces drawn.
-inline Pattern_scale choose_pattern_scale(const std::vector<Rectangle>& boxes, const std::vector<Box_3>& box_3d,
+inline Pattern_scale choose_pattern_scale(const std::vector<Rectangle>& boxes, const std::vector<CGAL::Bbox_3>& box_3d,
                                           const std::vector<bool>& used, const std::vector<bool>& loose,
                                           const IO::Pattern_options& options, double mm_per_unit, double pad)
 {
   const std::size_t n = boxes.size();
   const double mm = 1 / mm_per_unit;  // drawing units per millimetre
   auto extent_of = [&](const std::vector<bool>& drawn) {
-    Box_3 all = empty_box_3();
+    CGAL::Bbox_3 all;  // empty
     for(std::size_t k = 0; k < n; ++k)
-      if(drawn[k])
-        for(int c = 0; c < 3; ++c)
-          all[c] = (std::min)(all[c], box_3d[k][c]), all[c + 3] = (std::max)(all[c + 3], box_3d[k][c + 3]);
-    return (std::max)({all[3] - all[0], all[4] - all[1], all[5] - all[2]});
+      if(drawn[k]) all += box_3d[k];
+    return (std::max)({all.x_span(), all.y_span(), all.z_span()});
   };
   auto scale_for = [&](const std::vector<bool>& drawn) {
     Pattern_scale s;
