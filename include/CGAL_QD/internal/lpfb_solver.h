@@ -178,12 +178,13 @@ private:
           trial[i] = theta[i] + delta[i];
           same_sides = same_sides && (trial[i] > 0) == (theta[i] > 0) && (trial[i] < 2 * pi) == (theta[i] < 2 * pi);
         }
-        evaluate(trial, trial_lin, trial_N);
-        if(same_sides && all_finite(trial) && trial_N.allFinite() &&
-           violation_inf(trial_lin, trial_N) <= opt.constraint_tolerance) {
-          theta.swap(trial);
-          c_lin.swap(trial_lin);
-          c_N.swap(trial_N);
+        if(same_sides && all_finite(trial)) {
+          evaluate(trial, trial_lin, trial_N);
+          if(trial_N.allFinite() && violation_inf(trial_lin, trial_N) <= opt.constraint_tolerance) {
+            theta.swap(trial);
+            c_lin.swap(trial_lin);
+            c_N.swap(trial_N);
+          }
         }
         break;
       }
@@ -232,11 +233,6 @@ private:
         else if(cosine > 0.3) step_scale = (std::min)(step_scale * 2., 1.);
       }
       previous_delta = delta;
-      double t = step_scale;
-      bool accepted = false;
-      for(std::size_t i = 0; i < n_; ++i) trial[i] = theta[i] + t * delta[i];
-      double m = merit_at(trial);
-      if(std::isfinite(m) && m <= merit0 + armijo * t * slope + noise) accepted = true;
       // second-order correction: the trial point (whose constraints
       // `merit_at()` left in trial_lin, trial_N) pulled back onto the
       // linearised constraints with the current Jacobian, kept where its merit
@@ -256,14 +252,16 @@ private:
         trial.swap(soc);
         return true;
       };
-      if(!accepted && std::isfinite(m) && t == 1.) accepted = corrected(merit0 + armijo * slope + noise);
-      while(!accepted && t > 1e-12) {
-        t *= 0.5;
-        ++sol.backtracking_steps;
+      // backtracking from `step_scale`; a first step that oscillation shortened
+      // is tried without the correction, as before the correction was tried
+      // at every step length
+      bool accepted = false;
+      for(double t = step_scale;; t *= 0.5, ++sol.backtracking_steps) {
         for(std::size_t i = 0; i < n_; ++i) trial[i] = theta[i] + t * delta[i];
-        m = merit_at(trial);
-        if(std::isfinite(m) && m <= merit0 + armijo * t * slope + noise) accepted = true;
-        if(!accepted && std::isfinite(m)) accepted = corrected(merit0 + armijo * t * slope + noise);
+        const double m = merit_at(trial), bound = merit0 + armijo * t * slope + noise;
+        if(std::isfinite(m) && m <= bound) accepted = true;
+        else if(std::isfinite(m) && (t != step_scale || t == 1.)) accepted = corrected(bound);
+        if(accepted || !(t > 1e-12)) break;
       }
       if(!accepted) { sol.status = Lpfb_status::NOT_CONVERGED; break; }
       theta.swap(trial);

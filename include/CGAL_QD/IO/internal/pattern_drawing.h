@@ -107,13 +107,16 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                options.page_width > 2 * options.page_margin && options.page_height > 2 * options.page_margin;
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
     valid = std::isfinite(corner_uv[i][0]) && std::isfinite(corner_uv[i][1]);
+  // the box of a vertex's point, as doubles (not `Point_3::bbox()`, an
+  // interval for exact kernels)
+  auto box_of = [&](typename GT::vertex_descriptor v) {
+    const std::array<double, 3> p = CGAL_QD::internal::point_of<TriangleMesh>(v, vpm);
+    return CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+  };
   // the model's largest dimension
   if(valid) {
     CGAL::Bbox_3 all;  // empty
-    for(auto v : vertices(tm)) {
-      const std::array<double, 3> p = CGAL_QD::internal::point_of<TriangleMesh>(v, vpm);
-      all += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
-    }
+    for(auto v : vertices(tm)) all += box_of(v);
     const double extent = (std::max)({0., all.x_span(), all.y_span(), all.z_span()});
     valid = std::isfinite(extent) && extent > 0;
   }
@@ -174,8 +177,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   std::vector<bool> loose(n, true);
   for(std::size_t i = 0; i < nf; ++i)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm)) {
-      const std::array<double, 3> p = CGAL_QD::internal::point_of<TriangleMesh>(target(h, tm), vpm);
-      box_3d[chart[i]] += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+      box_3d[chart[i]] += box_of(target(h, tm));
       if(!is_border(opposite(h, tm), tm) && chart[get(fim, face(opposite(h, tm), tm))] != chart[i])
         loose[chart[i]] = false;
     }
