@@ -3017,6 +3017,66 @@ BOOST_AUTO_TEST_CASE(needless_cuts_are_closed_and_needed_ones_kept)
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_trial_given_a_flattening_starts_from_it)
+{
+  // the trials of shorten_chart_cuts() start from the chart's flattening,
+  // each wedge at the mean of its corners, instead of LPFB+IP
+  const std::size_t rings = 8, sectors = 32;
+  auto check = [&](const Surface_mesh& tm, bool flat) {
+    Face_map<Surface_mesh> chart;
+    double dart = 0;
+    const auto f = one_chart_with_a_dart(tm, rings, sectors, chart, dart);
+    BOOST_REQUIRE(f.rejected_charts == 0u);
+    const auto fim = CGAL::get_initialized_face_index_map(tm);
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    const std::vector<std::array<double, 3>> points =
+        QD::internal::points_by_index(tm, get(CGAL::vertex_point, tm), vim);
+    const std::vector<Surface_mesh::Face_index> fs(faces(tm).begin(), faces(tm).end());
+    // the flattening turned by a quarter and moved: a start LPFB+IP would not give
+    std::vector<std::array<double, 2>> start(3 * fs.size());
+    for(std::size_t i = 0; i < fs.size(); ++i)
+      for(std::size_t j = 0; j < 3; ++j) {
+        const std::array<double, 2>& p = f.corner_uv[3 * get(fim, fs[i]) + j];
+        start[3 * i + j] = {5. - p[1], 2. + p[0]};
+      }
+    const auto no_cut = [](Surface_mesh::Halfedge_index) { return false; };
+    for(QD::Chart_criterion criterion : {QD::Chart_criterion::LPFB_IP_THEN_ARAP, QD::Chart_criterion::LPFB_IP}) {
+      QD::internal::Merge_thresholds thresholds;
+      thresholds.criterion = criterion;
+      const QD::internal::Chart_evaluator<Surface_mesh, decltype(fim), decltype(vim)> evaluator(tm, fim, vim, points,
+                                                                                                thresholds);
+      std::vector<std::array<double, 2>> uv;
+      const QD::Chart_report rep = evaluator.evaluate(fs, no_cut, &uv, nullptr, &start);
+      BOOST_REQUIRE(rep.status == QD::Error_code::OK);
+      const bool paper = criterion == QD::Chart_criterion::LPFB_IP;
+      if(flat) {
+        // the dart of a flat disk is closed in its flattening: the start is an
+        // isometry, accepted and kept, where the paper's criterion flattens
+        // the disk by LPFB+IP as ever
+        BOOST_TEST(rep.accepted);
+        double farthest = 0;
+        for(std::size_t c = 0; c < uv.size(); ++c)
+          farthest = (std::max)(farthest, std::hypot(uv[c][0] - start[c][0], uv[c][1] - start[c][1]));
+        if(paper) {
+          BOOST_TEST(farthest > 1.);
+        } else {
+          BOOST_TEST(farthest < 1e-9);
+        }
+      } else if(!paper) {
+        // a cap whose dart is open in its flattening: the wedges of its two
+        // sides start halfway between them, and the optimisation brings the
+        // chart without the dart within the thresholds
+        BOOST_TEST(rep.accepted);
+        BOOST_TEST(rep.optimized);
+        BOOST_TEST(rep.local_area_distortion < 2.5);
+        BOOST_TEST(evaluator.evaluate(fs, no_cut, nullptr, nullptr, &start).accepted);
+      }
+    }
+  };
+  check(make<Surface_mesh>(polar(rings, sectors, flat_disk(1.))), true);
+  check(make<Surface_mesh>(polar(rings, sectors, sphere_cap(0.6))), false);
+}
+
 BOOST_AUTO_TEST_CASE(fandisk_darts_are_shortened_from_their_loose_ends)
 {
   Surface_mesh tm;

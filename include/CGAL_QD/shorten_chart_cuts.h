@@ -14,6 +14,7 @@
 #include <CGAL_QD/flatten_charts.h>
 #include <CGAL_QD/internal/chart_evaluator.h>
 #include <CGAL_QD/internal/constants.h>
+#include <CGAL_QD/internal/flattening_cache.h>
 #include <CGAL_QD/internal/cut_shortening.h>
 #include <CGAL_QD/internal/point_scale.h>
 #include <CGAL_QD/internal/validation.h>
@@ -78,7 +79,10 @@ struct Cut_shortening_result
 /// cut edges between the chart's border, the mesh's border, junctions of three
 /// or more cuts and loose ends) is tried, in each chart from the longest: it
 /// is closed whole if the chart, flattened as a merging trial flattens it
-/// (`Chart_criterion`), stays within the thresholds with a margin of 5 % on
+/// (`Chart_criterion`) but with the optimisation started from the chart's
+/// flattening in `segmentation` instead of LPFB+IP (the two sides of the
+/// edges closed meet halfway, so the chart's seams keep lengths near those
+/// its neighbours match), stays within the thresholds with a margin of 5 % on
 /// A_loc, else over half of its edges from its loose end, else a quarter, and
 /// so on down to one edge, the first that passes being kept; a cut without a
 /// loose end is closed whole or not at all. The charts do not change. Then
@@ -202,8 +206,14 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   // accepted trial
   internal::Chart_evaluator<TriangleMesh, FIM, VIM> evaluator(tm, fim, vim, points, trial_thresholds);
   evaluator.set_trial_memory(std::make_shared<internal::Trial_memory>());
+  // a trial starts from the chart's flattening in `segmentation`, the cuts it
+  // closes closed halfway between their two sides: the lengths of the
+  // chart's seams stay near those its neighbours match
   const auto trial = [&](const std::vector<face_descriptor>& fs, const auto& is_cut) {
-    return evaluator.evaluate(fs, is_cut, nullptr, nullptr, nullptr, 1000., true, nullptr).accepted;
+    std::vector<std::array<double, 2>> start(3 * fs.size());
+    for(std::size_t i = 0; i < fs.size(); ++i)
+      for(std::size_t j = 0; j < 3; ++j) start[3 * i + j] = seg.corner_uv[3 * get(fim, fs[i]) + j];
+    return evaluator.evaluate(fs, is_cut, nullptr, nullptr, &start, 1000., true, nullptr).accepted;
   };
   std::vector<internal::Cut_shortening> per_chart;
   std::vector<std::vector<std::size_t>> closed;
@@ -226,6 +236,9 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
            seg.unmatched_seams.end();
   };
   Chart_flattening_result<TriangleMesh>& f = result.flattening;
+  // a chart whose cuts stay as they were is flattened again, or fitted to
+  // the same lengths, in the same way as the last time: looked up
+  internal::Flattening_cache<Chart_report> cache;
   while(std::find(shortened.begin(), shortened.end(), 1) != shortened.end()) {
     std::vector<edge_descriptor> seams;
     for(edge_descriptor e : edges(tm))
@@ -250,10 +263,11 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     f = Chart_flattening_result<TriangleMesh>();
     f.points = points;
     internal::flatten_final_charts<ConcurrencyTag>(tm, vpm, fim, vim, him, chart, n, seams, thresholds,
-                                                   std::function<void(const char*, double)>(), f, nullptr, false,
+                                                   std::function<void(const char*, double)>(), f, &cache, false,
                                                    evaluator.orderings(), &frozen, &seg,
                                                    evaluator.trial_memory());
     ++result.flattenings;
+    cache.next_generation();
     if(!f) {
       result.status = f.status;
       break;

@@ -77,7 +77,11 @@ public:
   // length where the thresholds allow it (`exact`), or else pulled towards
   // it with `pull_weight` (`Arap_border::KEEP_LENGTHS`; with a small weight,
   // a step towards the targets that the chart takes as far as its rigidity
-  // lets it). `stop`, if given, is looked at between the steps of a trial
+  // lets it). `start_uv` without `border_target`: the chart's optimisation
+  // starts from that flattening instead of LPFB+IP (the corners of a wedge at
+  // the mean of their UVs, so that a cut the chart no longer has is closed
+  // halfway between its two sides); with the paper's criterion, which judges
+  // LPFB+IP itself, it is not used. `stop`, if given, is looked at between the steps of a trial
   // (without `corner_uv`) and at every iteration of its optimisation: once it
   // is set, the trial gives up, and its report, rejected, means nothing.
   template <class IsCut>
@@ -182,13 +186,26 @@ private:
       return rep;
     }
     if(stopped(stop)) return rep;
+    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
     // a final flattening of a chart that a trial accepted starts from that
-    // trial's LPFB+IP and optimisation (trial_memory.h)
+    // trial's start and optimisation (trial_memory.h)
     Trial_start resumed;
     const bool resume = corner_uv && m_trials && m_trials->find(trial_key(wedges), resumed);
+    const bool seeded = !resume && start_uv && !paper;
     if(resume) {
       for(auto v : vertices(sm)) put(uv, v, K::Point_2(resumed.lpfb_ip[v][0], resumed.lpfb_ip[v][1]));
       rep.number_of_border_loops = resumed.border_loops;
+    } else if(seeded) {
+      // the flattening given, each wedge at the mean of its corners
+      std::vector<std::array<double, 3>> sum(num_vertices(sm), {0., 0., 0.});
+      for(std::size_t c = 0; c < 3 * n_faces; ++c) {
+        std::array<double, 3>& s = sum[wedges.wedge_of_corner[c]];
+        s[0] += (*start_uv)[c][0];
+        s[1] += (*start_uv)[c][1];
+        s[2] += 1.;
+      }
+      for(auto v : vertices(sm)) put(uv, v, K::Point_2(sum[v][0] / sum[v][2], sum[v][1] / sum[v][2]));
+      rep.number_of_border_loops = number_of_border_loops(sm);
     } else {
       // SimplicialLDLT, not the default's supernodal factorisation for large
       // charts: the charts are flattened on the threads of the segmentation's
@@ -203,9 +220,13 @@ private:
         return rep;
       }
     }
-    const auto lpfb_ip_uv = uv;  // LPFB+IP's map: a trial writes no other into it
-    if(!measure(sm, uv, rep)) return rep;
-    const bool paper = m_thresholds.criterion == Chart_criterion::LPFB_IP;
+    const auto lpfb_ip_uv = uv;  // LPFB+IP's map (or the start given): a trial writes no other into it
+    if(!measure(sm, uv, rep)) {
+      // a start given may fold where a cut is closed: the optimisation unfolds it
+      if(!seeded) return rep;
+      rep.status = Error_code::OK;
+      rep.accepted = false;
+    }
     // an optimised flattening `map` replaces the flattening of `rep` when it is
     // accepted and that one is not, or when both are and it has less local
     // area distortion; a trial that rejects both reports the optimised map,
