@@ -92,11 +92,12 @@ struct Cut_shortening_result
 /// Every other chart keeps its flattening from `segmentation`,
 /// and the sides of its seams are the lengths its neighbours fit to (a
 /// flattening made afresh need not match the seams an earlier one matched:
-/// seams just within 0.5 % can flip). The cuts of a chart that is then
-/// rejected or overlaps, or one of whose seams no longer matches in length,
-/// are put back as they were (or, where none of the charts in the failure was
-/// shortened, those of the charts next to them: the fit couples the charts),
-/// and the charts flattened again, until every
+/// seams just within 0.5 % can flip). The last cut closed in a chart that is
+/// then rejected or overlaps, or one of whose seams no longer matches in
+/// length, is put back as it was, which leaves the chart as it passed the
+/// trial of the cut before (or, where none of the charts in the failure was
+/// shortened, the last cuts of the charts next to them: the fit couples the
+/// charts), and the charts flattened again, until every
 /// chart is accepted, none overlaps and no more seam curves end unmatched than
 /// in `segmentation`: the shortened cuts are then kept. A shorter cut is
 /// shorter to cut and to sew, and a chart with shorter cuts is rounder (a cut
@@ -216,7 +217,7 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     return evaluator.evaluate(fs, is_cut, nullptr, nullptr, &start, 1000., true, nullptr).accepted;
   };
   std::vector<internal::Cut_shortening> per_chart;
-  std::vector<std::vector<std::size_t>> closed;
+  std::vector<std::vector<internal::Closed_cut>> closed;
   const internal::Cut_shortening s =
       internal::shorten_cuts<ConcurrencyTag>(tm, fim, him, vim, points, trial, chart, n, seam, per_chart, closed);
   result.cut_curves = s.cut_curves;
@@ -228,8 +229,9 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
 
   // the charts shortened flattened again with the cuts left, and their
   // neighbours fitted to them; where a chart shortened is then rejected or
-  // overlaps, or a seam of it stops matching in length, its cuts are put
-  // back as they were, and the charts flattened again
+  // overlaps, or a seam of it stops matching in length, the last cut it
+  // closed is put back as it was (the chart as it was when the cut before
+  // passed its trial), and the charts flattened again
   const std::size_t unmatched_before = seg.number_of_seam_curves - seg.seam_curves_matched;
   auto unmatched_before_too = [&](const std::pair<std::size_t, std::size_t>& pair) {
     return std::find(seg.unmatched_seams.begin(), seg.unmatched_seams.end(), pair) !=
@@ -283,14 +285,16 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     for(const auto& pair : f.unmatched_seams)
       if(!unmatched_before_too(pair)) restore[pair.first] = restore[pair.second] = 1;
     // the fit of the seams couples the charts: where no chart in the failure
-    // was shortened, the shortened charts next to them are put back
+    // was shortened, the last cuts of the shortened charts next to them are
+    // put back
     bool restored = false;
     for(int ring = 0; ring < 2 && !restored; ++ring) {
       if(ring == 1) restore = with_neighbours(restore);
       for(std::size_t k = 0; k < n; ++k)
         if(restore[k] && shortened[k]) {
-          for(std::size_t h : closed[k]) seam[h] = 1;
-          shortened[k] = 0;
+          for(std::size_t h : closed[k].back().halfedges) seam[h] = 1;
+          closed[k].pop_back();
+          shortened[k] = closed[k].empty() ? 0 : 1;
           restored = true;
         }
     }
@@ -302,10 +306,10 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
     return finish();
   }
   for(std::size_t k = 0; k < n; ++k)
-    if(shortened[k]) {
-      result.cuts_shortened += per_chart[k].curves_shortened;
-      result.cuts_closed += per_chart[k].curves_closed;
-      result.cut_length_closed += per_chart[k].length_closed;
+    for(const internal::Closed_cut& c : closed[k]) {
+      ++result.cuts_shortened;
+      if(c.whole) ++result.cuts_closed;
+      result.cut_length_closed += c.length;
     }
   return finish();
 }

@@ -40,6 +40,15 @@ struct Cut_shortening
   std::size_t trials = 0;
 };
 
+// a cut curve closed whole or in part: the halfedge indices closed (both of
+// each edge), their length, and whether the curve was closed whole
+struct Closed_cut
+{
+  std::vector<std::size_t> halfedges;
+  double length = 0;
+  bool whole = false;
+};
+
 // `chart`: the chart of every face by face index, ids 0 to n - 1; `seam`: by
 // halfedge index (both halfedges of an edge), the edges cut. `evaluate(faces,
 // is_cut)` is the merging's trial of a chart (faces in increasing index).
@@ -56,14 +65,15 @@ struct Cut_shortening
 // charts are independent and are done in parallel, the dearest first, and
 // the trials of a curve two at a time (in the order above; both count); the
 // result does not depend on the threads. `seam` is updated; `per_chart`
-// receives what was done in every chart, and `closed` the halfedge indices
-// (both of each edge) that every chart's shortening closed.
+// receives what was done in every chart, and `closed` the curves every
+// chart's shortening closed, in the order they were closed (with the curves
+// before it, each passed a trial).
 template <class ConcurrencyTag, class TriangleMesh, class FIM, class HIM, class VIM, class Evaluate>
 Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& him, const VIM& vim,
                             const std::vector<std::array<double, 3>>& points, const Evaluate& evaluate,
                             const std::vector<std::size_t>& chart, std::size_t n, std::vector<char>& seam,
                             std::vector<Cut_shortening>& per_chart,
-                            std::vector<std::vector<std::size_t>>& closed)
+                            std::vector<std::vector<Closed_cut>>& closed)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -91,7 +101,7 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
     }
   }
   per_chart.assign(n, Cut_shortening());
-  closed.assign(n, std::vector<std::size_t>());
+  closed.assign(n, std::vector<Closed_cut>());
   if(cuts.empty()) return result;
 
   // every curve goes through vertices inside one chart only, whose edges no
@@ -114,7 +124,7 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
     }
   const std::vector<std::size_t> order = dearest_first(size);
   std::vector<Cut_shortening> done(todo.size());
-  std::vector<std::vector<std::size_t>> closed_in(todo.size());
+  std::vector<std::vector<Closed_cut>> closed_in(todo.size());
   // the position along the curve being tried of each of its edges (by
   // halfedge index, both halfedges), `none` elsewhere: a trial closes the
   // edges before a count. The curves of different charts share no edge.
@@ -176,12 +186,16 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
       if(kept == 0) continue;
       ++out.curves_shortened;
       if(kept == m) ++out.curves_closed;
+      Closed_cut cut;
+      cut.whole = kept == m;
       for(std::size_t i = 0; i < kept; ++i) {
         set(c.halfedges[i], 0);
-        out.length_closed += length(c.halfedges[i]);
-        closed_in[order[t]].push_back(get(him, c.halfedges[i]));
-        closed_in[order[t]].push_back(get(him, opposite(c.halfedges[i], tm)));
+        cut.length += length(c.halfedges[i]);
+        cut.halfedges.push_back(get(him, c.halfedges[i]));
+        cut.halfedges.push_back(get(him, opposite(c.halfedges[i], tm)));
       }
+      out.length_closed += cut.length;
+      closed_in[order[t]].push_back(std::move(cut));
     }
   });
   for(std::size_t t = 0; t < todo.size(); ++t) {
