@@ -216,16 +216,15 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
       for(std::size_t j = 0; j < 3; ++j) start[3 * i + j] = seg.corner_uv[3 * get(fim, fs[i]) + j];
     return evaluator.evaluate(fs, is_cut, nullptr, nullptr, &start, 1000., true, nullptr).accepted;
   };
-  std::vector<internal::Cut_shortening> per_chart;
   std::vector<std::vector<internal::Closed_cut>> closed;
   const internal::Cut_shortening s =
-      internal::shorten_cuts<ConcurrencyTag>(tm, fim, him, vim, points, trial, chart, n, seam, per_chart, closed);
+      internal::shorten_cuts<ConcurrencyTag>(tm, fim, him, vim, points, trial, chart, n, seam, closed);
   result.cut_curves = s.cut_curves;
   result.cut_length = s.length_before;
   result.trials = s.trials;
   result.cuts_passing_trials = s.curves_shortened;
   std::vector<char> shortened(n, 0);
-  for(std::size_t k = 0; k < n; ++k) shortened[k] = per_chart[k].curves_shortened > 0 ? 1 : 0;
+  for(std::size_t k = 0; k < n; ++k) shortened[k] = closed[k].empty() ? 0 : 1;
 
   // the charts shortened flattened again with the cuts left, and their
   // neighbours fitted to them; where a chart shortened is then rejected or

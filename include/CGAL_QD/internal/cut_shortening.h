@@ -64,15 +64,13 @@ struct Closed_cut
 // junction whose other cuts were closed may have become a loose end). The
 // charts are independent and are done in parallel, the dearest first, and
 // the trials of a curve two at a time (in the order above; both count); the
-// result does not depend on the threads. `seam` is updated; `per_chart`
-// receives what was done in every chart, and `closed` the curves every
-// chart's shortening closed, in the order they were closed (with the curves
-// before it, each passed a trial).
+// result does not depend on the threads. `seam` is updated, and `closed`
+// receives the curves every chart's shortening closed, in the order they
+// were closed (with the curves before it, each passed a trial).
 template <class ConcurrencyTag, class TriangleMesh, class FIM, class HIM, class VIM, class Evaluate>
 Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& him, const VIM& vim,
                             const std::vector<std::array<double, 3>>& points, const Evaluate& evaluate,
                             const std::vector<std::size_t>& chart, std::size_t n, std::vector<char>& seam,
-                            std::vector<Cut_shortening>& per_chart,
                             std::vector<std::vector<Closed_cut>>& closed)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
@@ -100,7 +98,6 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
       cuts.push_back(h);
     }
   }
-  per_chart.assign(n, Cut_shortening());
   closed.assign(n, std::vector<Closed_cut>());
   if(cuts.empty()) return result;
 
@@ -200,7 +197,6 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
   });
   for(std::size_t t = 0; t < todo.size(); ++t) {
     const Cut_shortening& s = done[t];
-    per_chart[todo[t]] = s;
     closed[todo[t]] = std::move(closed_in[t]);
     result.curves_shortened += s.curves_shortened;
     result.curves_closed += s.curves_closed;
