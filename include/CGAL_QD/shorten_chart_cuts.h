@@ -223,8 +223,12 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   result.cut_length = s.length_before;
   result.trials = s.trials;
   result.cuts_passing_trials = s.curves_shortened;
-  std::vector<char> shortened(n, 0);
-  for(std::size_t k = 0; k < n; ++k) shortened[k] = closed[k].empty() ? 0 : 1;
+  // whether each chart has a cut closed
+  auto shortened_charts = [&] {
+    std::vector<char> out(n, 0);
+    for(std::size_t k = 0; k < n; ++k) out[k] = closed[k].empty() ? 0 : 1;
+    return out;
+  };
 
   // the charts shortened flattened again with the cuts left, and their
   // neighbours fitted to them; where a chart shortened is then rejected or
@@ -240,7 +244,8 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
   // a chart whose cuts stay as they were is flattened again, or fitted to
   // the same lengths, in the same way as the last time: looked up
   internal::Flattening_cache<Chart_report> cache;
-  while(std::find(shortened.begin(), shortened.end(), 1) != shortened.end()) {
+  for(std::vector<char> shortened = shortened_charts();
+      std::find(shortened.begin(), shortened.end(), 1) != shortened.end(); shortened = shortened_charts()) {
     std::vector<edge_descriptor> seams;
     for(edge_descriptor e : edges(tm))
       if(seam[get(him, halfedge(e, tm))]) seams.push_back(e);
@@ -293,7 +298,6 @@ Cut_shortening_result<TriangleMesh> shorten_chart_cuts(const TriangleMesh& tm, c
         if(restore[k] && shortened[k]) {
           for(std::size_t h : closed[k].back().halfedges) seam[h] = 1;
           closed[k].pop_back();
-          shortened[k] = closed[k].empty() ? 0 : 1;
           restored = true;
         }
     }

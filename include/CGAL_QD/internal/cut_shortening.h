@@ -34,9 +34,7 @@ struct Cut_shortening
 {
   std::size_t cut_curves = 0;       // the cut curves found inside the charts
   std::size_t curves_shortened = 0; // closed whole or in part
-  std::size_t curves_closed = 0;    // closed whole
   double length_before = 0;         // of every cut curve
-  double length_closed = 0;
   std::size_t trials = 0;
 };
 
@@ -182,7 +180,6 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
       for(halfedge_descriptor h : c.halfedges) rank[get(him, h)] = rank[get(him, opposite(h, tm))] = none;
       if(kept == 0) continue;
       ++out.curves_shortened;
-      if(kept == m) ++out.curves_closed;
       Closed_cut cut;
       cut.whole = kept == m;
       for(std::size_t i = 0; i < kept; ++i) {
@@ -191,7 +188,6 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
         cut.halfedges.push_back(get(him, c.halfedges[i]));
         cut.halfedges.push_back(get(him, opposite(c.halfedges[i], tm)));
       }
-      out.length_closed += cut.length;
       closed_in[order[t]].push_back(std::move(cut));
     }
   });
@@ -199,9 +195,7 @@ Cut_shortening shorten_cuts(const TriangleMesh& tm, const FIM& fim, const HIM& h
     const Cut_shortening& s = done[t];
     closed[todo[t]] = std::move(closed_in[t]);
     result.curves_shortened += s.curves_shortened;
-    result.curves_closed += s.curves_closed;
     result.length_before += s.length_before;
-    result.length_closed += s.length_closed;
     result.trials += s.trials;
   }
   return result;
