@@ -32,12 +32,11 @@ inline __m128d arap_blend(__m128d mask, __m128d x, __m128d y)
 // kappa and 1 / kappa), two at a time in SSE2 lanes: the same operations in
 // the same order, so the same bits (the square roots and divisions, most of
 // the cost, run two at a time); the energy terms are added to `energy` face
-// after face. With P = 2 the two
-// pairs go through each stage side by side, so that the processor works on
-// one pair's chain of square roots and divisions while the other's waits.
-// The rotation, the target where a face is flipped, degenerate or a
-// similarity, is formed only where a face of the group needs it. For alpha
-// 0, 0.5 or 1.
+// after face. With P = 2 the two pairs go through each stage side by side,
+// so that the processor works on one pair's chain of square roots and
+// divisions while the other's waits. The rotation, the target where a face is
+// flipped, degenerate or a similarity, is formed only where a face of the
+// group needs it. For alpha 0, 0.5 or 1.
 template <int P>
 inline double arap_targets_in_lanes(std::vector<std::array<double, 4>>& target,
                                     const std::vector<std::array<double, 2>>& kappa_of, double alpha, std::size_t f,
