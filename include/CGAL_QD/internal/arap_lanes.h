@@ -59,7 +59,7 @@ inline double arap_targets_in_lanes(std::vector<std::array<double, 4>>& target,
     G[j] = _mm_mul_pd(_mm_add_pd(c[j], b[j]), half);
     H[j] = _mm_mul_pd(_mm_sub_pd(c[j], b[j]), half);
     q[j] = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(E[j], E[j]), _mm_mul_pd(H[j], H[j])));
-    ok[j] = zero;
+    ok[j] = t0[j] = t1[j] = t2[j] = t3[j] = zero;
   }
   int all_ok = 0;  // a bit per lane of every pair where the target is of determinant one
   if(alpha > 0) {
@@ -98,17 +98,10 @@ inline double arap_targets_in_lanes(std::vector<std::array<double, 4>>& target,
       const __m128d minus_Hq = _mm_xor_pd(Hq, _mm_set1_pd(-0.));
       const __m128d r0 = arap_blend(q_positive, Eq, one), r1 = arap_blend(q_positive, minus_Hq, zero);
       const __m128d r2 = arap_blend(q_positive, Hq, zero);
-      if(all_ok == 0) {
-        t0[j] = r0;
-        t1[j] = r1;
-        t2[j] = r2;
-        t3[j] = r0;
-      } else {
-        t0[j] = arap_blend(ok[j], t0[j], r0);
-        t1[j] = arap_blend(ok[j], t1[j], r1);
-        t2[j] = arap_blend(ok[j], t2[j], r2);
-        t3[j] = arap_blend(ok[j], t3[j], r0);
-      }
+      t0[j] = arap_blend(ok[j], t0[j], r0);
+      t1[j] = arap_blend(ok[j], t1[j], r1);
+      t2[j] = arap_blend(ok[j], t2[j], r2);
+      t3[j] = arap_blend(ok[j], t3[j], r0);
     }
   for(int j = 0; j < P; ++j) {
     double* T0 = target[f + 2 * j].data();
