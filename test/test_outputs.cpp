@@ -8,6 +8,7 @@
 #include "test_utils.h"
 
 #include <CGAL_QD/IO/charts_and_atlas.h>
+#include <CGAL_QD/IO/internal/label_placement.h>
 #include <CGAL_QD/IO/patterns_svg.h>
 #ifdef CGAL_QD_HAS_CAIRO
 #include <CGAL_QD/IO/patterns_pdf.h>
@@ -251,6 +252,9 @@ struct Drawn_piece
   std::size_t chart = 0, page = 0;
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   double largest_seam_label = 0, chart_label = 0;
+  std::vector<QD::internal::Pattern_drawing::Text> seam_labels;  // as drawn
+  QD::internal::Pattern_drawing::Text id;
+  std::vector<std::array<QD::internal::Pattern_drawing::P2, 2>> cut_lines;
   void add(double x, double y)
   {
     x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
@@ -303,13 +307,25 @@ Drawn_pattern parse_pattern(std::istream& in, const Surface_mesh& tm, double sca
     for(const auto& child : group.second) {
       const auto& node = child.second;
       const std::string cls = node.get<std::string>("<xmlattr>.class", "");
+      // a text: centred at (x, y), turned by the angle of its rotate()
+      auto text = [&]() {
+        QD::internal::Pattern_drawing::Text t;
+        t.at = {{node.get<double>("<xmlattr>.x"), node.get<double>("<xmlattr>.y")}};
+        t.size = node.get<double>("<xmlattr>.font-size");
+        t.text = node.data();
+        const std::string turn = node.get<std::string>("<xmlattr>.transform", "");
+        t.angle = turn.rfind("rotate(", 0) == 0 ? std::stod(turn.substr(7)) : 0.;
+        return t;
+      };
       if(child.first == "text" && cls == "seam") {
         ++d.labels[node.data()];
         piece.largest_seam_label = std::max(piece.largest_seam_label, node.get<double>("<xmlattr>.font-size"));
+        piece.seam_labels.push_back(text());
       }
       if(child.first == "text" && cls == "chart") {
         ++d.charts;
         piece.chart_label = node.get<double>("<xmlattr>.font-size");
+        piece.id = text();
       }
       if(child.first == "polygon" && cls == "tab") {
         ++d.tabs;
@@ -324,6 +340,7 @@ Drawn_pattern parse_pattern(std::istream& in, const Surface_mesh& tm, double sca
         piece.add(bx, by);
         if(cls != "cut") continue;
         ++d.cuts;
+        piece.cut_lines.push_back({{{{ax, ay}}, {{bx, by}}}});
         std::istringstream ids(node.get<std::string>("<xmlattr>.data-v"));
         std::size_t i, j;
         ids >> i >> j;
@@ -354,6 +371,26 @@ void expect_pieces_apart_within_margins(const Drawn_pattern& d, double margin)
       const Drawn_piece& q = d.pieces[b];
       const bool apart = p.page != q.page || p.x1 < q.x0 || q.x1 < p.x0 || p.y1 < q.y0 || q.y1 < p.y0;
       BOOST_TEST(apart, "pieces " << p.chart << " and " << q.chart << " overlap");
+    }
+  }
+}
+
+// no two seam labels of a piece overlapping, none on the piece's number, none
+// crossing a cut line
+void expect_labels_apart(const Drawn_pattern& d)
+{
+  using QD::internal::convex_overlap;
+  using QD::internal::text_box;
+  for(const Drawn_piece& p : d.pieces) {
+    const QD::internal::Segment_grid cuts(p.cut_lines, 1.);
+    for(std::size_t a = 0; a < p.seam_labels.size(); ++a) {
+      const auto box = text_box(p.seam_labels[a]);
+      BOOST_TEST(!convex_overlap(box, text_box(p.id)), "label " << p.seam_labels[a].text << " on piece " << p.chart);
+      BOOST_TEST(!cuts.crosses(box), "label " << p.seam_labels[a].text << " crosses a cut line of piece " << p.chart);
+      for(std::size_t b = 0; b < a; ++b)
+        BOOST_TEST(!convex_overlap(box, text_box(p.seam_labels[b])),
+                   "labels " << p.seam_labels[a].text << " and " << p.seam_labels[b].text << " overlap on piece "
+                             << p.chart);
     }
   }
 }
@@ -404,12 +441,99 @@ BOOST_AUTO_TEST_CASE(patterns_are_true_scale_with_matching_labels)
     for(auto h : halfedges(s.tm)) border += is_border(h, s.tm);
     BOOST_TEST(pr.cut_edges == 2 * s.result.seam_edges.size() + border);
     if(pr.oversized_charts == 0) expect_pieces_apart_within_margins(d, options.page_margin);
+    expect_labels_apart(d);
   }
 }
 
 // Without a scale, the model is 200 mm at its largest, or less, to whole
 // millimetres, when a piece would not fit on the page at that size; whatever
 // the size of the mesh's coordinates
+// Seam labels crowded along one side of a square piece, its number in the
+// middle: at their curves' middles they would overlap; placed, no two overlap,
+// none crosses the cut lines or sits on the number, and each stays beside its
+// own curve
+BOOST_AUTO_TEST_CASE(seam_labels_are_placed_apart_beside_their_curves)
+{
+  typedef QD::internal::Pattern_drawing::P2 P2;
+  typedef QD::internal::Pattern_drawing::Text Text;
+  using QD::internal::convex_overlap;
+  using QD::internal::text_box;
+  const double size = 3.5;
+  // the square [0, 40]^2 on the page (y down); along its bottom, six curves
+  // 4 long from x = 0 (two of them with their segments listed from the other
+  // end), up its left side one 12 long, and its top one curve, the whole side
+  std::vector<std::array<P2, 2>> square = {{{P2{{0., 40.}}, P2{{40., 40.}}}}, {{P2{{40., 40.}}, P2{{40., 0.}}}},
+                                           {{P2{{40., 0.}}, P2{{0., 0.}}}}, {{P2{{0., 0.}}, P2{{0., 40.}}}}};
+  std::vector<QD::internal::Seam_label_request> requests;
+  for(int i = 0; i < 6; ++i) {
+    QD::internal::Seam_label_request q;
+    q.text = QD::internal::seam_label(std::size_t(26 + i));  // A1, B1, ...
+    for(int k = 0; k < 4; ++k)  // the piece above: (dy, -dx) points up the page
+      q.curve.push_back({{P2{{4. * i + k, 40.}}, P2{{4. * i + k + 1, 40.}}}});
+    if(i % 3 == 1) std::reverse(q.curve.begin(), q.curve.end());  // in the other order along the curve
+    requests.push_back(q);
+  }
+  {
+    QD::internal::Seam_label_request q;
+    q.text = "Q";
+    for(int k = 0; k < 12; ++k)  // listed up the page, each segment down it: the piece to the right
+      q.curve.push_back({{P2{{0., 39. - k}}, P2{{0., 40. - k}}}});
+    requests.push_back(q);
+    q.text = "R";
+    q.curve = {{{P2{{40., 0.}}, P2{{0., 0.}}}}};  // piece below
+    requests.push_back(q);
+  }
+  Text id;
+  id.at = {{20., 20.}};
+  id.size = 2 * size;
+  id.text = "7";
+  const QD::internal::Segment_grid cuts(square, size);
+  const std::vector<Text> labels = QD::internal::place_seam_labels(requests, size, cuts, {id});
+  BOOST_REQUIRE(labels.size() == requests.size());
+  // at the middles of the bottom curves, the labels would overlap
+  {
+    Text a = labels[0], b = labels[1];
+    a.at = {{2., 40. - 0.9 * size}};
+    b.at = {{6., 40. - 0.9 * size}};
+    a.size = b.size = size;
+    a.angle = b.angle = 0;
+    BOOST_TEST(convex_overlap(text_box(a), text_box(b)));
+  }
+  for(std::size_t r = 0; r < labels.size(); ++r) {
+    const Text& t = labels[r];
+    BOOST_TEST(t.text == requests[r].text);
+    BOOST_TEST(t.size >= 0.5 * size - 1e-12);
+    BOOST_TEST(t.size <= size + 1e-12);
+    BOOST_TEST(!cuts.crosses(text_box(t)), "label " << t.text << " crosses the border");
+    BOOST_TEST(!convex_overlap(text_box(t), text_box(id)), "label " << t.text << " on the piece's number");
+    for(std::size_t s = 0; s < r; ++s)
+      BOOST_TEST(!convex_overlap(text_box(t), text_box(labels[s])), "labels " << t.text << " and " << labels[s].text);
+    // inside the square, beside its curve, turned along it
+    BOOST_TEST(t.at[0] > 0.);
+    BOOST_TEST(t.at[0] < 40.);
+    BOOST_TEST(t.at[1] > 0.);
+    BOOST_TEST(t.at[1] < 40.);
+    double nearest = HUGE_VAL;
+    for(const auto& s : requests[r].curve)
+      nearest = std::min(nearest, segment_distance(t.at, {{s[0][0], s[0][1], s[1][0], s[1][1]}}));
+    BOOST_TEST(nearest == 0.9 * t.size, tt::tolerance(1e-9));
+    const bool side = requests[r].text == "Q";
+    BOOST_TEST(std::abs(std::remainder(t.angle - (side ? 90. : 0.), 180.)) < 1e-9, t.text << " at " << t.angle);
+  }
+  // the bottom labels in the order of their curves
+  for(std::size_t r = 1; r < 6; ++r) BOOST_TEST(labels[r].at[0] > labels[r - 1].at[0]);
+  // the grid finds a border crossed whether its cells are small beside the
+  // segments (each side then looked at by every query) or not
+  Text across = id;
+  across.at = {{40., 13.}};
+  for(double cell : {0.5, 3.5, 100.}) {
+    const QD::internal::Segment_grid grid(square, cell);
+    BOOST_TEST(grid.crosses(text_box(across)));
+    BOOST_TEST(!grid.crosses(text_box(id)));
+    for(const Text& t : labels) BOOST_TEST(!grid.crosses(text_box(t)));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(patterns_default_to_a_real_size)
 {
   for(const Segmented& s : meshes())

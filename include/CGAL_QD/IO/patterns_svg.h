@@ -75,8 +75,10 @@ namespace IO {
 ///   vertices in `tm`;
 /// - every seam curve (a chain of seam edges between the same two charts, or a
 ///   cut inside one chart, from junction to junction) has a label, drawn on
-///   both sides of the seam, inside the piece, beside the middle of the curve,
-///   so the pieces can be matched;
+///   both sides of the seam, inside the piece beside the curve, as near its
+///   middle as the label can be without overlapping another label, the chart
+///   id or a notch number or crossing a cut line (smaller, down to half its
+///   height, where it must), so the pieces can be matched;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
 /// - with `seam_allowance` (needs Clipper: `CGAL_QD_HAS_CLIPPER`; otherwise
 ///   `INVALID_ARGUMENT`), the outline of the points within that distance of the

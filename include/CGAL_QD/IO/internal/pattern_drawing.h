@@ -17,6 +17,7 @@
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
 #include <CGAL_QD/IO/internal/pattern_scale.h>
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
+#include <CGAL_QD/IO/internal/label_placement.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
 #include <CGAL_QD/IO/internal/seam_notches.h>
 #include <CGAL_QD/IO/pattern_options.h>
@@ -229,9 +230,9 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     return std::make_pair((std::min)(a, b), (std::max)(a, b));
   };
   const std::vector<std::vector<halfedge_descriptor>> curves = internal::labelled_seam_curves(tm, chart, seam, fim, vim, him);
-  // the sides of every curve to label: the halfedge of the curve's middle edge (by 3D
-  // length) and its opposite, each in the face whose chart it labels
-  std::vector<std::vector<std::pair<halfedge_descriptor, std::size_t>>> labels_of_chart(n);
+  // the sides of every curve to label, each in the chart whose faces its halfedges are in:
+  // the curve's halfedges (side 0) or their opposites (side 1)
+  std::vector<std::vector<std::pair<std::size_t, int>>> labels_of_chart(n);
   std::vector<std::pair<std::size_t, std::size_t>> curve_charts(curves.size());
   std::vector<double> curve_length(curves.size(), 0.);
   for(std::size_t id = 0; id < curves.size(); ++id) {
@@ -243,10 +244,10 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                                                      CGAL_QD::internal::point_of<TriangleMesh>(target(h, tm), vpm)));
       total += lengths.back();
     }
-    std::size_t middle = 0;
-    for(double run = lengths[0]; run < total / 2 && middle + 1 < lengths.size(); run += lengths[++middle]) {}
-    for(halfedge_descriptor h : {curves[id][middle], opposite(curves[id][middle], tm)})
-      labels_of_chart[chart[get(fim, face(h, tm))]].emplace_back(h, id);
+    for(int side = 0; side < 2; ++side) {
+      const halfedge_descriptor h = side == 0 ? curves[id].front() : opposite(curves[id].front(), tm);
+      labels_of_chart[chart[get(fim, face(h, tm))]].emplace_back(id, side);
+    }
     curve_length[id] = total;
   }
   // the curves drawn: all but the cuts inside pieces left out (a loose piece has no other)
@@ -360,24 +361,38 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         piece.lines.push_back({Pattern_drawing::Line_kind(folds[q].kind), folds[q].a, folds[q].b, {{0, 0}}});
         ++result.fold_lines;
       }
-    // seam labels inside the piece, beside the middle edge of their curve
-    const double label = (std::min)(font, side / 4);
-    for(const auto& hl : labels_of_chart[k]) {
-      const halfedge_descriptor h = hl.first;
-      const P2 a = point_at(corner(prev(h, tm))), b = point_at(corner(h));
-      const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
-      // towards the face, (dy, -dx) / l as for the tabs, by 0.9 label heights, and
-      // beyond the notches and their numbers if there are
-      const double beyond = options.notch_spacing > 0 ? notch_length(k) + 1.2 * font : 0.;
-      const double t = l > 0 ? (0.9 * label + beyond) / l : 0.;
-      const P2 at{{(a[0] + b[0]) / 2 + t * dy, (a[1] + b[1]) / 2 - t * dx}};
-      const double angle = std::atan2(dy, dx) * 180 / 3.141592653589793;
-      const double upright = angle > 90 || angle < -90 ? angle + 180 : angle;
-      piece.labels.push_back({at, label, upright, seam_label(hl.second)});
-    }
     for(const auto& nt : notches_of_chart[k]) {
       piece.notches.push_back(nt.first);
       piece.notch_labels.push_back(nt.second);
+    }
+    // the chart id at the centre of its box
+    piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
+                (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
+    // seam labels inside the piece beside their curve, apart from one another
+    // and from the texts already there, off the cut lines (label_placement.h)
+    {
+      std::vector<std::array<P2, 2>> cut_segments;
+      for(const Pattern_drawing::Line& l : piece.lines)
+        if(l.kind == Pattern_drawing::CUT) cut_segments.push_back({{l.a, l.b}});
+      const double label = (std::min)(font, side / 4);
+      const internal::Segment_grid cuts(std::move(cut_segments), label);
+      std::vector<Pattern_drawing::Text> fixed = piece.notch_labels;
+      fixed.push_back(piece.id);
+      // beyond the notches and their numbers if there are
+      const double beyond = options.notch_spacing > 0 ? notch_length(k) + 1.2 * font : 0.;
+      std::vector<internal::Seam_label_request> requests;
+      for(const auto& label_side : labels_of_chart[k]) {
+        internal::Seam_label_request q;
+        q.text = seam_label(label_side.first);
+        q.beyond = beyond;
+        for(halfedge_descriptor h0 : curves[label_side.first]) {
+          const halfedge_descriptor h = label_side.second == 0 ? h0 : opposite(h0, tm);
+          q.curve.push_back({{point_at(corner(prev(h, tm))), point_at(corner(h))}});  // h runs from [0] to [1]
+        }
+        requests.push_back(std::move(q));
+      }
+      for(Pattern_drawing::Text& t : internal::place_seam_labels(requests, label, cuts, fixed))
+        piece.labels.push_back(std::move(t));
     }
 #ifdef CGAL_QD_HAS_CLIPPER
     if(options.seam_allowance > 0) {
@@ -386,9 +401,6 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       piece.allowance = seam_allowance_outline(triangles, options.seam_allowance, 1e-4 * mm);
     }
 #endif
-    // the chart id at the centre of its box
-    piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
-                (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
   }
   // the pieces larger than a page in parts, on the pages after the others;
   // then the assembly page

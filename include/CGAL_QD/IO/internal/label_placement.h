@@ -1,0 +1,290 @@
+// Copyright (c) 2026 The CGAL_QD developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_QD_IO_INTERNAL_LABEL_PLACEMENT_H
+#define CGAL_QD_IO_INTERNAL_LABEL_PLACEMENT_H
+
+// Where the seam labels of a printed piece go: beside their curve, inside the
+// piece, apart from one another, from the piece's number and from the notch
+// numbers, and off the cut lines. Each label tries places along its curve from
+// the curve's middle outwards, at its full height and then smaller; where no
+// place is free (a piece too small for its labels), it takes the place that
+// meets the fewest others.
+
+#include <CGAL_QD/IO/internal/pattern_pieces.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL_QD {
+namespace internal {
+
+// the text drawn as a rectangle: its corners, counter-clockwise in a y-up
+// frame; a character is taken 0.7 of the height wide and a capital 0.75 high
+// (sans-serif capitals and digits, as the labels are), with `margin` around
+inline std::array<Pattern_drawing::P2, 4> text_box(const Pattern_drawing::Text& t, double margin = 0)
+{
+  const double w = 0.7 * t.size * double(t.text.size()) / 2 + margin, h = 0.75 * t.size / 2 + margin;
+  const double a = t.angle * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
+  std::array<Pattern_drawing::P2, 4> box;
+  const double dx[4] = {-w, w, w, -w}, dy[4] = {-h, -h, h, h};
+  for(int k = 0; k < 4; ++k) box[k] = {{t.at[0] + c * dx[k] - s * dy[k], t.at[1] + s * dx[k] + c * dy[k]}};
+  return box;
+}
+
+// whether two convex polygons (2 to 4 corners in order; 2: a segment) overlap,
+// by separating axes: the normals of their edges
+template <std::size_t N, std::size_t M>
+bool convex_overlap(const std::array<Pattern_drawing::P2, N>& p, const std::array<Pattern_drawing::P2, M>& q)
+{
+  auto separated_along = [&](double ax, double ay) {
+    if(ax == 0 && ay == 0) return false;
+    double p0 = HUGE_VAL, p1 = -HUGE_VAL, q0 = HUGE_VAL, q1 = -HUGE_VAL;
+    for(const auto& v : p) {
+      const double d = v[0] * ax + v[1] * ay;
+      p0 = (std::min)(p0, d);
+      p1 = (std::max)(p1, d);
+    }
+    for(const auto& v : q) {
+      const double d = v[0] * ax + v[1] * ay;
+      q0 = (std::min)(q0, d);
+      q1 = (std::max)(q1, d);
+    }
+    return p1 < q0 || q1 < p0;
+  };
+  for(std::size_t k = 0; k < N; ++k) {
+    const auto &a = p[k], &b = p[(k + 1) % N];
+    if(separated_along(a[1] - b[1], b[0] - a[0])) return false;
+  }
+  for(std::size_t k = 0; k < M; ++k) {
+    const auto &a = q[k], &b = q[(k + 1) % M];
+    if(separated_along(a[1] - b[1], b[0] - a[0])) return false;
+  }
+  return true;
+}
+
+// The segments of a piece's cut lines, bucketed in square cells (a segment
+// whose box spans many cells is kept aside and looked at by every query)
+class Segment_grid
+{
+public:
+  typedef Pattern_drawing::P2 P2;
+  typedef std::array<P2, 2> Segment;
+
+  Segment_grid(std::vector<Segment> segments, double cell) : m_segments(std::move(segments)), m_cell(cell)
+  {
+    for(std::size_t i = 0; i < m_segments.size(); ++i) {
+      const Segment& s = m_segments[i];
+      if(!for_cells(s[0][0], s[0][1], s[1][0], s[1][1], [&](std::uint64_t key) { m_cells[key].push_back(i); }))
+        m_long.push_back(i);
+    }
+  }
+
+  // whether a segment crosses the convex polygon `p`
+  template <std::size_t N>
+  bool crosses(const std::array<P2, N>& p) const
+  {
+    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+    for(const P2& v : p) {
+      x0 = (std::min)(x0, v[0]);
+      y0 = (std::min)(y0, v[1]);
+      x1 = (std::max)(x1, v[0]);
+      y1 = (std::max)(y1, v[1]);
+    }
+    for(std::size_t i : m_long)
+      if(convex_overlap(p, m_segments[i])) return true;
+    bool hit = false;
+    const bool few = for_cells(x0, y0, x1, y1, [&](std::uint64_t key) {
+      if(hit) return;
+      const auto it = m_cells.find(key);
+      if(it == m_cells.end()) return;
+      for(std::size_t i : it->second)
+        if(convex_overlap(p, m_segments[i])) {
+          hit = true;
+          return;
+        }
+    });
+    if(!few)  // a query far larger than the cells: every segment
+      for(const Segment& s : m_segments)
+        if(convex_overlap(p, s)) return true;
+    return hit;
+  }
+
+private:
+  // calls f with the key of every cell the box spans, unless it spans more
+  // than 64 (or the cell size is not a positive number): then returns false
+  template <class F>
+  bool for_cells(double ax, double ay, double bx, double by, F&& f) const
+  {
+    if(!(m_cell > 0)) return false;
+    const double i0 = std::floor((std::min)(ax, bx) / m_cell), i1 = std::floor((std::max)(ax, bx) / m_cell);
+    const double j0 = std::floor((std::min)(ay, by) / m_cell), j1 = std::floor((std::max)(ay, by) / m_cell);
+    if(!((i1 - i0 + 1) * (j1 - j0 + 1) <= 64)) return false;
+    for(double i = i0; i <= i1; ++i)
+      for(double j = j0; j <= j1; ++j)
+        f((std::uint64_t(std::uint32_t(std::int64_t(i))) << 32) | std::uint64_t(std::uint32_t(std::int64_t(j))));
+    return true;
+  }
+
+  std::vector<Segment> m_segments;
+  double m_cell;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> m_cells;
+  std::vector<std::size_t> m_long;  // spanning many cells
+};
+
+// A seam label to place: its text, and the side of its curve in the piece as
+// segments on the page in order along the curve, each with the piece on the
+// side of (dy, -dx) (a segment may run against the curve)
+struct Seam_label_request
+{
+  std::string text;
+  std::vector<std::array<Pattern_drawing::P2, 2>> curve;
+  double beyond = 0;  // how much further into the piece than the label's own offset (notches)
+};
+
+// the polyline of a request's segments in their order along the curve, and
+// for each of its segments whether the piece lies on the side of (dy, -dx)
+inline void curve_polyline(const Seam_label_request& q, std::vector<Pattern_drawing::P2>& points,
+                           std::vector<char>& left)
+{
+  typedef Pattern_drawing::P2 P2;
+  points.clear();
+  left.clear();
+  auto d2 = [](const P2& a, const P2& b) { return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]); };
+  for(std::size_t i = 0; i < q.curve.size(); ++i) {
+    const auto& s = q.curve[i];
+    bool forward = true;  // travelled from s[0] to s[1]
+    if(i == 0) {
+      if(q.curve.size() > 1) {
+        const auto& n = q.curve[1];
+        forward = (std::min)(d2(s[1], n[0]), d2(s[1], n[1])) <= (std::min)(d2(s[0], n[0]), d2(s[0], n[1]));
+      }
+      points.push_back(forward ? s[0] : s[1]);
+    } else {
+      forward = d2(s[0], points.back()) <= d2(s[1], points.back());
+    }
+    points.push_back(forward ? s[1] : s[0]);
+    left.push_back(forward ? 1 : 0);
+  }
+}
+
+// The labels of one piece at most `size` high, each `0.9 size + beyond` into
+// the piece from its curve and turned along it; `cuts` are the piece's cut
+// lines, `fixed` the texts already on the piece (its number, notch numbers).
+// The shorter curves are placed first: they have the fewer places.
+inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Seam_label_request>& requests,
+                                                            double size, const Segment_grid& cuts,
+                                                            const std::vector<Pattern_drawing::Text>& fixed)
+{
+  typedef Pattern_drawing::P2 P2;
+  typedef Pattern_drawing::Text Text;
+  typedef std::array<P2, 4> Box;
+  const std::size_t places = 33;                    // along each curve
+  const std::array<double, 3> heights = {{1., 0.75, 0.5}};  // of `size`, tried in turn
+  const double margin = 0.1 * size;
+
+  std::vector<Box> taken;
+  for(const Text& t : fixed) taken.push_back(text_box(t, margin));
+  std::vector<double> length(requests.size(), 0.);
+  for(std::size_t r = 0; r < requests.size(); ++r)
+    for(const auto& s : requests[r].curve) length[r] += std::hypot(s[1][0] - s[0][0], s[1][1] - s[0][1]);
+  std::vector<std::size_t> order(requests.size());
+  for(std::size_t r = 0; r < order.size(); ++r) order[r] = r;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length[a] < length[b]; });
+
+  std::vector<Text> out(requests.size());
+  for(std::size_t r : order) {
+    const Seam_label_request& q = requests[r];
+    std::vector<P2> points;
+    std::vector<char> left;
+    curve_polyline(q, points, left);
+    const double total = length[r];
+    // the point at arc length s along the curve, and its segment
+    auto at = [&](double s, std::size_t* segment = nullptr) {
+      s = (std::max)(0., (std::min)(total, s));
+      for(std::size_t i = 0; i + 1 < points.size(); ++i) {
+        const P2 &a = points[i], &b = points[i + 1];
+        const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
+        if(s <= l || i + 2 == points.size()) {
+          if(segment) *segment = i;
+          const double t = l > 0 ? (std::min)(1., s / l) : 0.;
+          return P2{{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])}};
+        }
+        s -= l;
+      }
+      if(segment) *segment = 0;
+      return points.empty() ? P2{{0., 0.}} : points.back();
+    };
+    // the label at arc length s, `height` high: along the chord of the curve
+    // over the label's width, into the piece
+    auto label_at = [&](double s, double height, P2& foot) {
+      Text t;
+      t.size = height;
+      t.text = q.text;
+      const double half = 0.35 * height * double(q.text.size());
+      std::size_t segment = 0;
+      foot = at(s, &segment);
+      P2 a = at(s - half), b = at(s + half);
+      if(a == b && points.size() > 1) {  // a curve of no length: its first segment's direction
+        a = points[0];
+        b = points[1];
+      }
+      const double sign = left.empty() || left[segment] ? 1. : -1.;
+      const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
+      const double d = 0.9 * height + q.beyond;
+      t.at = l > 0 ? P2{{foot[0] + sign * d * dy / l, foot[1] - sign * d * dx / l}} : foot;
+      const double angle = std::atan2(dy, dx) * 180 / 3.141592653589793;
+      t.angle = angle > 90 || angle < -90 ? angle + 180 : angle;
+      return t;
+    };
+    // how many things a label meets: other labels and texts count more than a cut line
+    auto conflicts = [&](const Text& t, const P2& foot) {
+      const Box box = text_box(t, margin);
+      std::size_t c = 0;
+      for(const Box& o : taken) c += convex_overlap(box, o) ? 2 : 0;
+      // off the cut lines, and not behind another one seen from its curve
+      const double l = std::hypot(t.at[0] - foot[0], t.at[1] - foot[1]);
+      const double from = l > 0 ? (std::min)(1., 0.3 * t.size / l) : 0.;
+      const std::array<P2, 2> sight = {
+          {P2{{foot[0] + from * (t.at[0] - foot[0]), foot[1] + from * (t.at[1] - foot[1])}}, t.at}};
+      if(cuts.crosses(text_box(t)) || (from < 1 && cuts.crosses(sight))) ++c;
+      return c;
+    };
+    bool placed = false;
+    std::size_t least = 0;
+    Text best;
+    for(double h : heights) {
+      for(std::size_t j = 0; j < places && !placed; ++j) {
+        // the middle, then alternately either side of it
+        const double step = total / double(places - 1);
+        const double s = total / 2 + (j % 2 == 1 ? 1. : -1.) * double((j + 1) / 2) * step;
+        P2 foot;
+        const Text t = label_at(s, h * size, foot);
+        const std::size_t c = conflicts(t, foot);
+        if(c == 0) {
+          best = t;
+          placed = true;
+        } else if((h == heights[0] && j == 0) || c < least) {
+          best = t;
+          least = c;
+        }
+      }
+      if(placed) break;
+    }
+    out[r] = best;
+    taken.push_back(text_box(best, margin));
+  }
+  return out;
+}
+
+} // namespace internal
+} // namespace CGAL_QD
+
+#endif // CGAL_QD_IO_INTERNAL_LABEL_PLACEMENT_H
