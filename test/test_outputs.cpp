@@ -375,13 +375,20 @@ void expect_pieces_apart_within_margins(const Drawn_pattern& d, double margin)
   }
 }
 
-// no two seam labels of a piece overlapping, none on the piece's number, none
-// crossing a cut line
+// every piece's number on the piece; no two seam labels of a piece
+// overlapping, none on the piece's number, none crossing a cut line
 void expect_labels_apart(const Drawn_pattern& d)
 {
   using QD::internal::convex_overlap;
   using QD::internal::text_box;
   for(const Drawn_piece& p : d.pieces) {
+    // the piece's number on the piece (a ray from it crosses its cut lines an odd number of times)
+    bool inside = false;
+    for(const auto& c : p.cut_lines)
+      if((c[0][1] > p.id.at[1]) != (c[1][1] > p.id.at[1]) &&
+         c[0][0] + (p.id.at[1] - c[0][1]) * (c[1][0] - c[0][0]) / (c[1][1] - c[0][1]) > p.id.at[0])
+        inside = !inside;
+    BOOST_TEST(inside, "the number of piece " << p.chart << " is off the piece");
     const QD::internal::Segment_grid cuts(p.cut_lines, 1.);
     for(std::size_t a = 0; a < p.seam_labels.size(); ++a) {
       const auto box = text_box(p.seam_labels[a]);
@@ -532,6 +539,35 @@ BOOST_AUTO_TEST_CASE(seam_labels_are_placed_apart_beside_their_curves)
     BOOST_TEST(!grid.crosses(text_box(id)));
     for(const Text& t : labels) BOOST_TEST(!grid.crosses(text_box(t)));
   }
+}
+
+// A piece's number goes where the piece is widest: on a U, inside the U at the
+// centre of a largest inscribed circle, not in the gap between its arms where
+// the centre of its box is
+BOOST_AUTO_TEST_CASE(piece_number_goes_where_the_piece_is_widest)
+{
+  typedef QD::internal::Pattern_drawing::P2 P2;
+  // the square [0, 30]^2 less [10, 20] x [0, 20] (y down: the gap opens at the top)
+  const std::vector<P2> u = {P2{{0., 0.}},   P2{{10., 0.}},  P2{{10., 20.}}, P2{{20., 20.}},
+                             P2{{20., 0.}},  P2{{30., 0.}},  P2{{30., 30.}}, P2{{0., 30.}}};
+  std::vector<std::array<P2, 2>> border;
+  for(std::size_t i = 0; i < u.size(); ++i) border.push_back({{u[i], u[(i + 1) % u.size()]}});
+  const std::pair<P2, double> widest = QD::internal::farthest_inside(border);
+  // within the U; its largest inscribed circles, in the two bottom corners,
+  // touch two sides and the end of the gap: radius 10 / (1 + 1 / sqrt(2))
+  const P2& p = widest.first;
+  const bool in_u = p[0] > 0 && p[0] < 30 && p[1] > 0 && p[1] < 30 && !(p[0] > 10 && p[0] < 20 && p[1] < 20);
+  BOOST_TEST(in_u, "at " << p[0] << ", " << p[1]);
+  const double radius = 10. / (1. + 1. / std::sqrt(2.));
+  BOOST_TEST(widest.second > 0.99 * radius);
+  BOOST_TEST(widest.second <= radius + 1e-12);
+  double nearest = HUGE_VAL;
+  for(const auto& s : border) nearest = std::min(nearest, segment_distance(p, {{s[0][0], s[0][1], s[1][0], s[1][1]}}));
+  BOOST_TEST(nearest == widest.second, tt::tolerance(1e-12));
+  // a sliver with no area: the centre of its box
+  const std::pair<P2, double> flat = QD::internal::farthest_inside({{{P2{{0., 0.}}, P2{{4., 0.}}}}, {{P2{{4., 0.}}, P2{{0., 0.}}}}});
+  BOOST_TEST(flat.second == 0.);
+  BOOST_TEST(flat.first[0] == 2.);
 }
 
 BOOST_AUTO_TEST_CASE(patterns_default_to_a_real_size)

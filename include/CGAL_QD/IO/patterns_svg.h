@@ -93,7 +93,8 @@ namespace IO {
 ///   dashed in blue; only where those edges make a line at least
 ///   `min_fold_length` long on the page, or a shorter one between the cut line
 ///   and other fold lines (see `Pattern_options::min_fold_length`);
-/// - the chart id at the centre of the chart's box;
+/// - the chart id where the piece is widest (the point inside it farthest
+///   from its cut lines), smaller where it would reach them (down to half);
 /// - unless `options.assembly_page` is false, a last page lists the order in
 ///   which to join the pieces (`Pattern_result::assembly`): outward from the
 ///   largest piece (by 3D area), each step the piece that shares the longest

@@ -4,12 +4,13 @@
 #ifndef CGAL_QD_IO_INTERNAL_LABEL_PLACEMENT_H
 #define CGAL_QD_IO_INTERNAL_LABEL_PLACEMENT_H
 
-// Where the seam labels of a printed piece go: beside their curve, inside the
-// piece, apart from one another, from the piece's number and from the notch
-// numbers, and off the cut lines. Each label tries places along its curve from
-// the curve's middle outwards, at its full height and then smaller; where no
-// place is free (a piece too small for its labels), it takes the place that
-// meets the fewest others.
+// Where the texts of a printed piece go. Its number: where the piece is
+// widest (`farthest_inside()`). Its seam labels: beside their curve, inside
+// the piece, apart from one another, from the piece's number and from the
+// notch numbers, and off the cut lines. Each label tries places along its
+// curve from the curve's middle outwards, at its full height and then
+// smaller; where no place is free (a piece too small for its labels), it
+// takes the place that meets the fewest others.
 
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
 
@@ -138,6 +139,87 @@ private:
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> m_cells;
   std::vector<std::size_t> m_long;  // spanning many cells
 };
+
+// The point inside the region that `segments` bound (closed loops: a point is
+// inside where a ray from it crosses them an odd number of times) farthest
+// from them, and that distance: the best of a 40 x 40 grid over their box,
+// then twice the best of a 9 x 9 grid around the point found, each a quarter
+// of the spacing before. Where no point of the first grid is inside (a
+// sliver), the centre of the box and a distance of 0.
+inline std::pair<Pattern_drawing::P2, double>
+farthest_inside(const std::vector<std::array<Pattern_drawing::P2, 2>>& segments)
+{
+  typedef Pattern_drawing::P2 P2;
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+  for(const auto& s : segments)
+    for(const P2& v : s) {
+      x0 = (std::min)(x0, v[0]);
+      y0 = (std::min)(y0, v[1]);
+      x1 = (std::max)(x1, v[0]);
+      y1 = (std::max)(y1, v[1]);
+    }
+  if(segments.empty()) return {P2{{0., 0.}}, 0.};
+  auto inside = [&](const P2& p) {
+    bool odd = false;
+    for(const auto& s : segments)
+      if((s[0][1] > p[1]) != (s[1][1] > p[1]) &&
+         s[0][0] + (p[1] - s[0][1]) * (s[1][0] - s[0][0]) / (s[1][1] - s[0][1]) > p[0])
+        odd = !odd;
+    return odd;
+  };
+  // the distance from p to the segments, or a number no larger than `beaten`
+  // once it is clear that the distance is no larger
+  auto distance = [&](const P2& p, double beaten) {
+    double d2 = HUGE_VAL;
+    const double stop = beaten > 0 ? beaten * beaten : -1.;
+    for(const auto& s : segments) {
+      const double dx = s[1][0] - s[0][0], dy = s[1][1] - s[0][1], l2 = dx * dx + dy * dy;
+      const double t =
+          l2 > 0 ? (std::max)(0., (std::min)(1., ((p[0] - s[0][0]) * dx + (p[1] - s[0][1]) * dy) / l2)) : 0.;
+      const double ex = s[0][0] + t * dx - p[0], ey = s[0][1] + t * dy - p[1];
+      d2 = (std::min)(d2, ex * ex + ey * ey);
+      if(d2 <= stop) break;
+    }
+    return std::sqrt(d2);
+  };
+  P2 best{{(x0 + x1) / 2, (y0 + y1) / 2}};
+  double farthest = -1;
+  auto look = [&](const P2& p, bool known_inside) {
+    if(!known_inside && !inside(p)) return;
+    const double d = distance(p, farthest);
+    if(d > farthest) {
+      farthest = d;
+      best = p;
+    }
+  };
+  const int n = 40;
+  double sx = (x1 - x0) / n, sy = (y1 - y0) / n;
+  std::vector<double> crossings;
+  for(int j = 0; j < n; ++j) {
+    // the row's points inside: between the 1st and 2nd crossing of the row, the 3rd and 4th, ...
+    const double y = y0 + (j + 0.5) * sy;
+    crossings.clear();
+    for(const auto& s : segments)
+      if((s[0][1] > y) != (s[1][1] > y))
+        crossings.push_back(s[0][0] + (y - s[0][1]) * (s[1][0] - s[0][0]) / (s[1][1] - s[0][1]));
+    std::sort(crossings.begin(), crossings.end());
+    for(int i = 0; i < n; ++i) {
+      const double x = x0 + (i + 0.5) * sx;
+      const std::size_t beyond = std::size_t(crossings.end() - std::upper_bound(crossings.begin(), crossings.end(), x));
+      if(beyond % 2 == 1) look(P2{{x, y}}, true);
+    }
+  }
+  if(farthest < 0) return {best, 0.};
+  for(int round = 0; round < 2; ++round) {
+    sx /= 4;
+    sy /= 4;
+    const P2 centre = best;
+    for(int i = -4; i <= 4; ++i)
+      for(int j = -4; j <= 4; ++j)
+        if(i != 0 || j != 0) look(P2{{centre[0] + i * sx, centre[1] + j * sy}}, false);
+  }
+  return {best, farthest};
+}
 
 // A seam label to place: its text, and the side of its curve in the piece as
 // segments on the page in order along the curve, each with the piece on the

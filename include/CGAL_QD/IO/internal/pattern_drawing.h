@@ -365,15 +365,24 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       piece.notches.push_back(nt.first);
       piece.notch_labels.push_back(nt.second);
     }
-    // the chart id at the centre of its box
-    piece.id = {P2{{p.at[0] + p.size[0] / 2, p.page * ph + p.at[1] + p.size[1] / 2}},
-                (std::min)(1.5 * font, side / 3), 0., std::to_string(k)};
+    std::vector<std::array<P2, 2>> cut_segments;
+    for(const Pattern_drawing::Line& l : piece.lines)
+      if(l.kind == Pattern_drawing::CUT) cut_segments.push_back({{l.a, l.b}});
+    // the chart id where the piece is widest (the point inside it farthest
+    // from its cut lines), smaller where it would reach them, down to half
+    {
+      const std::string text = std::to_string(k);
+      const std::pair<P2, double> widest = internal::farthest_inside(cut_segments);
+      const double largest = (std::min)(1.5 * font, side / 3);
+      // the half diagonal of the text's box (label_placement.h) per unit of height
+      const double reach = std::hypot(0.375, 0.35 * double(text.size()));
+      const double size = widest.second > 0 ? (std::min)(largest, (std::max)(largest / 2, widest.second / reach))
+                                            : largest;
+      piece.id = {widest.first, size, 0., text};
+    }
     // seam labels inside the piece beside their curve, apart from one another
     // and from the texts already there, off the cut lines (label_placement.h)
     {
-      std::vector<std::array<P2, 2>> cut_segments;
-      for(const Pattern_drawing::Line& l : piece.lines)
-        if(l.kind == Pattern_drawing::CUT) cut_segments.push_back({{l.a, l.b}});
       const double label = (std::min)(font, side / 4);
       const internal::Segment_grid cuts(std::move(cut_segments), label);
       std::vector<Pattern_drawing::Text> fixed = piece.notch_labels;
