@@ -13,11 +13,11 @@
 #include <CGAL_QD/IO/internal/assembly_order.h>
 #include <CGAL_QD/IO/internal/assembly_page.h>
 #include <CGAL_QD/IO/internal/fold_lines.h>
+#include <CGAL_QD/IO/internal/label_placement.h>
 #include <CGAL_QD/IO/internal/pattern_layout.h>
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
 #include <CGAL_QD/IO/internal/pattern_scale.h>
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
-#include <CGAL_QD/IO/internal/label_placement.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
 #include <CGAL_QD/IO/internal/seam_notches.h>
 #include <CGAL_QD/IO/pattern_options.h>
@@ -302,7 +302,6 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.pieces.clear();
   drawing.assembly.clear();
   drawing.captions.clear();
-  const double ph = options.page_height;
   for(std::size_t k : layout.order) {
     const internal::Piece_placement& p = place[k];
     const double side = smaller_side(k);
