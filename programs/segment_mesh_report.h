@@ -138,6 +138,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"part_pages", p.part_pages},
                      {"notches", p.notches},
                      {"left_out_pieces", p.left_out_pieces},
+                     {"crowded_pieces", p.crowded_pieces},
                      {"fold_lines", p.fold_lines},
                      {"min_fold_length", number(p.min_fold_length)},
                      {"seam_allowance", number(patterns.seam_allowance)},

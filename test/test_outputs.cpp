@@ -449,6 +449,7 @@ BOOST_AUTO_TEST_CASE(patterns_are_true_scale_with_matching_labels)
     BOOST_TEST(pr.cut_edges == 2 * s.result.seam_edges.size() + border);
     if(pr.oversized_charts == 0) expect_pieces_apart_within_margins(d, options.page_margin);
     expect_labels_apart(d);
+    BOOST_TEST(pr.crowded_pieces.empty());
   }
 }
 
@@ -997,6 +998,80 @@ BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
   BOOST_REQUIRE(pfa);
   BOOST_TEST(pfa.left_out_pieces.empty());
   BOOST_TEST(pfa.scale == 200. / (44.01 - low), boost::test_tools::tolerance(1e-12));
+}
+
+// The pieces too small at the scale chosen for their seam labels are named
+// (Pattern_result::crowded_pieces): the torus at 5 mm, whose labels would be
+// under half the font's height, but none at 400 mm; a piece less than 10 mm
+// across gets lines of its own, a fortieth of its smaller side, while the
+// others keep 0.25 mm, also beside a speck a few millimetres across
+BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
+{
+  const Segmented& s = meshes().front();
+  // the torus with a triangle in its hole, a chart of its own
+  Surface_mesh speck = s.tm;
+  Chart_map speck_chart = s.chart;
+  std::vector<std::array<double, 2>> speck_uv = s.result.corner_uv;
+  std::size_t speck_id = 0;
+  for(const auto& fc : s.chart) speck_id = (std::max)(speck_id, fc.second + 1);
+  {
+    const double side = 0.02;
+    const auto a = speck.add_vertex(Epick::Point_3(0, 0, 0)), b = speck.add_vertex(Epick::Point_3(side, 0, 0)),
+               c = speck.add_vertex(Epick::Point_3(0, side, 0));
+    const auto f = speck.add_face(a, b, c);
+    BOOST_REQUIRE(f != Surface_mesh::null_face());
+    speck_chart[f] = speck_id;
+    BOOST_REQUIRE_EQUAL(speck_uv.size(), 3 * std::size_t(f));
+    auto h = halfedge(f, speck);
+    for(int k = 0; k < 3; ++k, h = next(h, speck))
+      speck_uv.push_back({{speck.point(target(h, speck)).x(), speck.point(target(h, speck)).y()}});
+  }
+  const double half_font = 0.5 * 210. / 60;  // A4, the default font size
+  for(int run = 0; run < 3; ++run) {
+    const Surface_mesh& tm = run < 2 ? s.tm : speck;
+    QD::IO::Pattern_options options;
+    options.model_size = run == 0 ? 5. : 400.;
+    std::stringstream ss;
+    const QD::IO::Pattern_result pr =
+        run < 2 ? QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                             s.result.seam_edges, options)
+                : QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(speck_chart), speck_uv,
+                                             s.result.seam_edges, options);
+    BOOST_REQUIRE(pr);
+    BOOST_TEST(pr.model_size == options.model_size, tt::tolerance(1e-12));
+    BOOST_TEST(std::is_sorted(pr.crowded_pieces.begin(), pr.crowded_pieces.end()));
+    const std::string svg = ss.str();
+    const std::string style = svg.substr(svg.find("<style>"), svg.find("</style>") - svg.find("<style>"));
+    BOOST_TEST(style.rfind("<style>.cut{stroke:#000;stroke-width:0.2500;fill:none}", 0) == 0u);
+    const Drawn_pattern d = parse_pattern(ss, tm, pr.scale, pr.number_of_pages);
+    BOOST_TEST(d.pieces.size() == s.result.number_of_charts + (run == 2 ? 1 : 0));
+    std::size_t with_labels = 0, thin = 0;
+    for(const Drawn_piece& p : d.pieces) {
+      const bool crowded = std::binary_search(pr.crowded_pieces.begin(), pr.crowded_pieces.end(), p.chart);
+      bool unreadable = false;
+      for(const auto& t : p.seam_labels) unreadable = unreadable || t.size < half_font * (1 - 1e-6);
+      if(unreadable) BOOST_TEST(crowded, "piece " << p.chart << " has a label under half the font's height");
+      if(run == 0 && !p.seam_labels.empty()) BOOST_TEST(crowded, "piece " << p.chart << " at 5 mm");
+      if(run > 0) BOOST_TEST(!crowded, "piece " << p.chart << " at 400 mm");
+      with_labels += !p.seam_labels.empty();
+      // its own lines where it is less than 10 mm across
+      const std::string scope = ".piece[data-chart=\"" + std::to_string(p.chart) + "\"] .cut{stroke:#000;stroke-width:";
+      const std::size_t at = style.find(scope);
+      const double side = (std::min)(p.x1 - p.x0, p.y1 - p.y0);
+      if(side < 10 - 0.01) {
+        BOOST_REQUIRE_MESSAGE(at != std::string::npos, "piece " << p.chart << " is " << side << " mm across");
+        BOOST_TEST(40 * std::stod(style.substr(at + scope.size())) == side, tt::tolerance(0.01));
+        ++thin;
+      } else if(side > 10 + 0.01) {
+        BOOST_TEST(at == std::string::npos, "piece " << p.chart << " is " << side << " mm across");
+      }
+    }
+    BOOST_TEST(with_labels > 0u);
+    if(run == 0) BOOST_TEST(pr.crowded_pieces.size() == with_labels);
+    if(run == 0) BOOST_TEST(thin == d.pieces.size());
+    if(run == 1) BOOST_TEST(thin == 0u);
+    if(run == 2) BOOST_TEST(thin == 1u);  // the speck alone
+  }
 }
 
 // the two sides of every seam as drawn: with the paper's criterion every

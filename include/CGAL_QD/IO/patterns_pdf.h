@@ -66,7 +66,7 @@ inline void stroke_lines(cairo_t* cr, const Pattern_drawing::Piece& piece, Patte
 template <class Drawing>
 void draw_piece(cairo_t* cr, const typename Drawing::Piece& piece, const Drawing& d)
 {
-  const double line = d.line_width;
+  const double line = piece.line_width;
   const double mountain[4] = {12 * line, 4 * line, 2 * line, 4 * line}, valley[2] = {8 * line, 4 * line};
   cairo_set_line_width(cr, 0.6 * line);
   for(const auto& t : piece.tabs) {

@@ -72,13 +72,16 @@ namespace IO {
 ///   from the side its face normals point to);
 /// - cut lines (solid, class `cut`) on every border edge of a chart: a seam or a
 ///   border of the mesh. Each carries `data-v="i j"`, the indices of the edge's
-///   vertices in `tm`;
+///   vertices in `tm`. Lines are 0.25 mm wide, and on a piece less than 10 mm
+///   across a fortieth of its smaller side (a style of that piece's own);
 /// - every seam curve (a chain of seam edges between the same two charts, or a
 ///   cut inside one chart, from junction to junction) has a label, drawn on
 ///   both sides of the seam, inside the piece beside the curve, as near its
 ///   middle as the label can be without overlapping another label, the chart
 ///   id or a notch number or crossing a cut line (smaller, down to half its
-///   height, where it must), so the pieces can be matched;
+///   height, where it must), so the pieces can be matched; the pieces too
+///   small for their labels at the scale are listed in
+///   `Pattern_result::crowded_pieces`;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
 /// - with `seam_allowance` (needs Clipper: `CGAL_QD_HAS_CLIPPER`; otherwise
 ///   `INVALID_ARGUMENT`), the outline of the points within that distance of the
@@ -136,21 +139,30 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
       << " at its largest); cut on solid lines, fold red dash-dot lines as mountains and blue dashed "
       << "lines as valleys, join equal labels.</desc>\n";
   auto n_ = [](double x) { return internal::svg_number(x); };
-  // with a seam allowance the piece's border is the stitch line, dashed, and the allowance's outline the cut
-  const std::string cut = d.seam_allowance > 0 ? ".cut{stroke:#000;stroke-width:" + n_(0.6 * line) + ";stroke-dasharray:" +
-                                                     n_(6 * line) + ' ' + n_(3 * line) + ";fill:none}.allowance{stroke:#000;stroke-width:" +
-                                                     n_(line) + ";fill:none}"
-                                               : ".cut{stroke:#000;stroke-width:" + n_(line) + ";fill:none}";
-  out << "<style>" << cut << ".mountain{stroke:#c00;stroke-width:"
-      << n_(0.8 * line) << ";stroke-dasharray:" << n_(12 * line) << ' ' << n_(4 * line) << ' ' << n_(2 * line) << ' '
-      << n_(4 * line) << "}.valley{stroke:#00c;stroke-width:" << n_(0.8 * line) << ";stroke-dasharray:"
-      << n_(8 * line) << ' ' << n_(4 * line) << "}.tab{fill:#eee;stroke:#777;stroke-width:" << n_(0.6 * line)
-      << "}.page{fill:none;stroke:#ccc;stroke-width:" << n_(0.3 * mm) << "}"
+  // the lines' style at a width: with a seam allowance the piece's border is
+  // the stitch line, dashed, and the allowance's outline the cut line
+  auto line_rules = [&](const std::string& scope, double line) {
+    std::string rules = d.seam_allowance > 0 ? scope + ".cut{stroke:#000;stroke-width:" + n_(0.6 * line) +
+                                                   ";stroke-dasharray:" + n_(6 * line) + ' ' + n_(3 * line) +
+                                                   ";fill:none}" + scope + ".allowance{stroke:#000;stroke-width:" +
+                                                   n_(line) + ";fill:none}"
+                                             : scope + ".cut{stroke:#000;stroke-width:" + n_(line) + ";fill:none}";
+    rules += scope + ".mountain{stroke:#c00;stroke-width:" + n_(0.8 * line) + ";stroke-dasharray:" + n_(12 * line) +
+             ' ' + n_(4 * line) + ' ' + n_(2 * line) + ' ' + n_(4 * line) + "}" + scope +
+             ".valley{stroke:#00c;stroke-width:" + n_(0.8 * line) + ";stroke-dasharray:" + n_(8 * line) + ' ' +
+             n_(4 * line) + "}" + scope + ".tab{fill:#eee;stroke:#777;stroke-width:" + n_(0.6 * line) + "}";
+    if(result.notches > 0) rules += scope + ".notch{stroke:#000;stroke-width:" + n_(line) + "}";
+    return rules;
+  };
+  out << "<style>" << line_rules("", line) << ".page{fill:none;stroke:#ccc;stroke-width:" << n_(0.3 * mm) << "}"
       << "text{font-family:sans-serif;text-anchor:middle;dominant-baseline:middle}"
       << (d.assembly.empty() ? "" : "text.assembly{text-anchor:start}")
-      << (result.notches == 0 ? "" : ".notch{stroke:#000;stroke-width:" + n_(line) + "}")
-      << (result.part_pages == 0 ? "" : ".frame{fill:none;stroke:#999;stroke-width:" + n_(0.5 * line) + "}.mark{fill:#595959}")
-      << "</style>\n";
+      << (result.part_pages == 0 ? "" : ".frame{fill:none;stroke:#999;stroke-width:" + n_(0.5 * line) + "}.mark{fill:#595959}");
+  // the thinner lines of the pieces less than 10 mm across
+  for(const internal::Pattern_drawing::Piece& piece : d.pieces)
+    if(piece.line_width < line)
+      out << line_rules(".piece[data-chart=\"" + std::to_string(piece.chart) + "\"] ", piece.line_width);
+  out << "</style>\n";
   for(std::size_t p = 0; p < d.number_of_pages; ++p)
     out << "<rect class=\"page\" x=\"0\" y=\"" << n_(p * ph) << "\" width=\"" << n_(w) << "\" height=\"" << n_(ph)
         << "\"/>\n<text class=\"page\" x=\"" << n_(w / 2) << "\" y=\"" << n_(p * ph + ph - d.page_margin / 2)

@@ -260,10 +260,12 @@ inline void curve_polyline(const Seam_label_request& q, std::vector<Pattern_draw
 // The labels of one piece at most `size` high, each `0.9 size + beyond` into
 // the piece from its curve and turned along it; `cuts` are the piece's cut
 // lines, `fixed` the texts already on the piece (its number, notch numbers).
-// The shorter curves are placed first: they have the fewer places.
+// The shorter curves are placed first: they have the fewer places. `crowded`,
+// when given, counts the labels that found no free place.
 inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Seam_label_request>& requests,
                                                             double size, const Segment_grid& cuts,
-                                                            const std::vector<Pattern_drawing::Text>& fixed)
+                                                            const std::vector<Pattern_drawing::Text>& fixed,
+                                                            std::size_t* crowded = nullptr)
 {
   typedef Pattern_drawing::P2 P2;
   typedef Pattern_drawing::Text Text;
@@ -360,6 +362,7 @@ inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Se
       }
       if(placed) break;
     }
+    if(!placed && crowded) ++*crowded;
     out[r] = best;
     taken.push_back(text_box(best, margin));
   }

@@ -220,9 +220,13 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   auto smaller_side = [&](std::size_t k) {
     return (std::max)(0., (std::min)(place[k].size[0], place[k].size[1]) - 2 * pad);
   };
-  double line = 0.25 * mm;
-  for(std::size_t k : layout.order) line = (std::min)(line, smaller_side(k) / 40);
-  if(!(line > 0)) line = 0.25 * mm;  // only pieces without area
+  // 0.25 mm, thinner on a piece less than 10 mm across, so that its lines
+  // leave it room; a piece without area keeps 0.25 mm
+  const double line = 0.25 * mm;
+  auto line_of = [&](std::size_t k) {
+    const double l = smaller_side(k) / 40;
+    return l > 0 ? (std::min)(line, l) : line;
+  };
 
   // ---- seam curves: connected seam edges with the same pair of charts, in order along the curve
   auto pair_of = [&](halfedge_descriptor h) {
@@ -309,6 +313,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     Pattern_drawing::Piece& piece = drawing.pieces.back();
     piece.chart = k;
     piece.page = p.page;
+    piece.line_width = line_of(k);
     // tabs first, under the piece
     for(halfedge_descriptor h : tabs_of_chart[k]) {
       const P2 a = point_at(corner(prev(h, tm))), b = point_at(corner(h));  // h runs from a to b
@@ -399,8 +404,12 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         }
         requests.push_back(std::move(q));
       }
-      for(Pattern_drawing::Text& t : internal::place_seam_labels(requests, label, cuts, fixed))
+      std::size_t crowded = 0;
+      for(Pattern_drawing::Text& t : internal::place_seam_labels(requests, label, cuts, fixed, &crowded)) {
+        if(t.size < 0.5 * font * (1 - 1e-9)) ++crowded;  // too small to read
         piece.labels.push_back(std::move(t));
+      }
+      if(crowded > 0) result.crowded_pieces.push_back(k);
     }
 #ifdef CGAL_QD_HAS_CLIPPER
     if(options.seam_allowance > 0) {
@@ -410,6 +419,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     }
 #endif
   }
+  std::sort(result.crowded_pieces.begin(), result.crowded_pieces.end());
   // the pieces larger than a page in parts, on the pages after the others;
   // then the assembly page
   std::size_t pages = layout.first_part_page;

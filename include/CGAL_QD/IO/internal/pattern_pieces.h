@@ -47,7 +47,8 @@ struct Pattern_drawing
     std::vector<Line> notches;            // from the cut line into the piece; `vertices` (seam, number)
     std::vector<Text> notch_labels;       // their numbers
     std::vector<std::vector<P2>> allowance;  // the outlines of the seam allowance: the cut lines then
-    Text id;                              // the chart id, at the centre of its box
+    Text id;                              // the chart id, where the piece is widest
+    double line_width = 0;                // of its cut lines, the other lines in proportion
     // a piece larger than a page: the parts printed (its drawing is shown only
     // through them), and the diamonds across the lines where they meet
     std::vector<Pattern_part> parts;
@@ -57,7 +58,7 @@ struct Pattern_drawing
   std::string units;
   double page_width = 0, page_height = 0, page_margin = 0;
   std::size_t number_of_pages = 0;
-  double line_width = 0;  // of the cut lines
+  double line_width = 0;  // of the cut lines of the pieces 10 mm across and more, and of the frames
   double seam_allowance = 0;
   double font_size = 0;   // the largest label height
   double millimetre = 1;  // in drawing units
