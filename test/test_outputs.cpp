@@ -375,6 +375,17 @@ void expect_pieces_apart_within_margins(const Drawn_pattern& d, double margin)
   }
 }
 
+// whether a point is on a piece: a ray from it crosses the piece's cut lines
+// an odd number of times
+bool on_piece(const Drawn_piece& p, const QD::internal::Pattern_drawing::P2& x)
+{
+  bool inside = false;
+  for(const auto& c : p.cut_lines)
+    if((c[0][1] > x[1]) != (c[1][1] > x[1]) && c[0][0] + (x[1] - c[0][1]) * (c[1][0] - c[0][0]) / (c[1][1] - c[0][1]) > x[0])
+      inside = !inside;
+  return inside;
+}
+
 // every piece's number on the piece; no two seam labels of a piece
 // overlapping, none on the piece's number, none crossing a cut line
 void expect_labels_apart(const Drawn_pattern& d)
@@ -382,13 +393,7 @@ void expect_labels_apart(const Drawn_pattern& d)
   using QD::internal::convex_overlap;
   using QD::internal::text_box;
   for(const Drawn_piece& p : d.pieces) {
-    // the piece's number on the piece (a ray from it crosses its cut lines an odd number of times)
-    bool inside = false;
-    for(const auto& c : p.cut_lines)
-      if((c[0][1] > p.id.at[1]) != (c[1][1] > p.id.at[1]) &&
-         c[0][0] + (p.id.at[1] - c[0][1]) * (c[1][0] - c[0][0]) / (c[1][1] - c[0][1]) > p.id.at[0])
-        inside = !inside;
-    BOOST_TEST(inside, "the number of piece " << p.chart << " is off the piece");
+    BOOST_TEST(on_piece(p, p.id.at), "the number of piece " << p.chart << " is off the piece");
     const QD::internal::Segment_grid cuts(p.cut_lines, 1.);
     for(std::size_t a = 0; a < p.seam_labels.size(); ++a) {
       const auto box = text_box(p.seam_labels[a]);
@@ -1000,11 +1005,14 @@ BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
   BOOST_TEST(pfa.scale == 200. / (44.01 - low), boost::test_tools::tolerance(1e-12));
 }
 
-// The pieces too small at the scale chosen for their seam labels are named
-// (Pattern_result::crowded_pieces): the torus at 5 mm, whose labels would be
-// under half the font's height, but none at 400 mm; a piece less than 10 mm
-// across gets lines of its own, a fortieth of its smaller side, while the
-// others keep 0.25 mm, also beside a speck a few millimetres across
+// The torus at 5 mm: its pieces are too small for labels inside them that
+// could be read (a quarter of a piece's smaller side, under half the font's
+// height), so each label goes outside its piece, half the font's height,
+// within the room the layout keeps around the piece, or the piece is named
+// (Pattern_result::crowded_pieces); at 400 mm every label is inside and no
+// piece is named. A piece less than 10 mm across gets lines of its own, a
+// fortieth of its smaller side, while the others keep 0.25 mm, also beside a
+// speck a few millimetres across
 BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
 {
   const Segmented& s = meshes().front();
@@ -1045,13 +1053,25 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
     BOOST_TEST(style.rfind("<style>.cut{stroke:#000;stroke-width:0.2500;fill:none}", 0) == 0u);
     const Drawn_pattern d = parse_pattern(ss, tm, pr.scale, pr.number_of_pages);
     BOOST_TEST(d.pieces.size() == s.result.number_of_charts + (run == 2 ? 1 : 0));
-    std::size_t with_labels = 0, thin = 0;
+    std::size_t with_labels = 0, thin = 0, outside = 0;
     for(const Drawn_piece& p : d.pieces) {
       const bool crowded = std::binary_search(pr.crowded_pieces.begin(), pr.crowded_pieces.end(), p.chart);
-      bool unreadable = false;
-      for(const auto& t : p.seam_labels) unreadable = unreadable || t.size < half_font * (1 - 1e-6);
-      if(unreadable) BOOST_TEST(crowded, "piece " << p.chart << " has a label under half the font's height");
-      if(run == 0 && !p.seam_labels.empty()) BOOST_TEST(crowded, "piece " << p.chart << " at 5 mm");
+      for(const auto& t : p.seam_labels) {
+        if(t.size < half_font * (1 - 1e-6))
+          BOOST_TEST(crowded, "piece " << p.chart << " has a label under half the font's height");
+        if(on_piece(p, t.at)) {
+          BOOST_TEST((run > 0 || crowded), "piece " << p.chart << " has a label inside at 5 mm");
+          continue;
+        }
+        ++outside;
+        BOOST_TEST(run == 0, "a label of piece " << p.chart << " is outside at 400 mm");
+        BOOST_TEST(t.size == half_font, tt::tolerance(1e-6));
+        for(const auto& corner : QD::internal::text_box(t)) {  // within half the spacing of the piece's box
+          const double reach = options.spacing / 2 + 1e-3;
+          BOOST_TEST((corner[0] >= p.x0 - reach && corner[0] <= p.x1 + reach), "piece " << p.chart);
+          BOOST_TEST((corner[1] >= p.y0 - reach && corner[1] <= p.y1 + reach), "piece " << p.chart);
+        }
+      }
       if(run > 0) BOOST_TEST(!crowded, "piece " << p.chart << " at 400 mm");
       with_labels += !p.seam_labels.empty();
       // its own lines where it is less than 10 mm across
@@ -1067,7 +1087,19 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
       }
     }
     BOOST_TEST(with_labels > 0u);
-    if(run == 0) BOOST_TEST(pr.crowded_pieces.size() == with_labels);
+    if(run == 0) BOOST_TEST(outside > pr.crowded_pieces.size());
+    // the labels of the pieces not named lie apart, from those of other pieces too
+    Drawn_pattern roomy = d;
+    roomy.pieces.clear();
+    for(const Drawn_piece& p : d.pieces)
+      if(!std::binary_search(pr.crowded_pieces.begin(), pr.crowded_pieces.end(), p.chart)) roomy.pieces.push_back(p);
+    expect_labels_apart(roomy);
+    for(std::size_t a = 0; a < roomy.pieces.size(); ++a)
+      for(std::size_t b = 0; b < a; ++b)
+        for(const auto& s : roomy.pieces[a].seam_labels)
+          for(const auto& t : roomy.pieces[b].seam_labels)
+            BOOST_TEST(!QD::internal::convex_overlap(QD::internal::text_box(s), QD::internal::text_box(t)),
+                       "labels of pieces " << roomy.pieces[a].chart << " and " << roomy.pieces[b].chart);
     if(run == 0) BOOST_TEST(thin == d.pieces.size());
     if(run == 1) BOOST_TEST(thin == 0u);
     if(run == 2) BOOST_TEST(thin == 1u);  // the speck alone

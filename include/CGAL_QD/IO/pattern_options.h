@@ -194,10 +194,10 @@ struct Pattern_result
   /// every labelled seam curve, in label order; the assembly page lists those not `matched`
   std::vector<Pattern_seam> seams;
   /// the pieces too small at this scale for their seam labels, by chart id: a label that found no
-  /// place apart from the others, the piece's number and the cut lines, or one drawn smaller than
-  /// half the largest label height (`Pattern_options::font_size`, or 1/60 of the page's smaller
-  /// side), since labels are at most a quarter of a piece's smaller side. A larger scale gives them
-  /// room.
+  /// place apart from the others, the piece's number and the cut lines, inside the piece or outside
+  /// it, or one drawn inside smaller than half the largest label height (`Pattern_options::font_size`,
+  /// or 1/60 of the page's smaller side), since labels inside are at most a quarter of a piece's
+  /// smaller side. A larger scale gives them room.
   std::vector<std::size_t> crowded_pieces;
 
   explicit operator bool() const { return status == Error_code::OK; }

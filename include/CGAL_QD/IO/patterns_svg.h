@@ -79,9 +79,11 @@ namespace IO {
 ///   both sides of the seam, inside the piece beside the curve, as near its
 ///   middle as the label can be without overlapping another label, the chart
 ///   id or a notch number or crossing a cut line (smaller, down to half its
-///   height, where it must), so the pieces can be matched; the pieces too
-///   small for their labels at the scale are listed in
-///   `Pattern_result::crowded_pieces`;
+///   height, where it must), so the pieces can be matched. A piece too small
+///   for labels of half the largest height gets them outside, beside their
+///   curves, within half of `spacing` of the piece (not with tabs or a seam
+///   allowance); the pieces still too small for their labels at the scale
+///   are listed in `Pattern_result::crowded_pieces`;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
 /// - with `seam_allowance` (needs Clipper: `CGAL_QD_HAS_CLIPPER`; otherwise
 ///   `INVALID_ARGUMENT`), the outline of the points within that distance of the

@@ -9,8 +9,10 @@
 // the piece, apart from one another, from the piece's number and from the
 // notch numbers, and off the cut lines. Each label tries places along its
 // curve from the curve's middle outwards, at its full height and then
-// smaller; where no place is free (a piece too small for its labels), it
-// takes the place that meets the fewest others.
+// smaller, as long as it stays readable; then, on a piece too small for
+// readable labels, outside the piece beside its curve, within the room the
+// layout keeps around the piece; then smaller inside. Where no place is
+// free, it takes the place that meets the fewest others.
 
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
 
@@ -257,21 +259,40 @@ inline void curve_polyline(const Seam_label_request& q, std::vector<Pattern_draw
   }
 }
 
+// Where the labels of a piece may go outside it: `readable` high, within
+// `room` (x0, y0, x1, y1), the box the layout keeps for the piece
+struct Outside_labels
+{
+  double readable = 0;
+  std::array<double, 4> room{{0, 0, 0, 0}};
+};
+
 // The labels of one piece at most `size` high, each `0.9 size + beyond` into
 // the piece from its curve and turned along it; `cuts` are the piece's cut
 // lines, `fixed` the texts already on the piece (its number, notch numbers).
+// Heights of `readable` and more are tried first, then, with `outside`, its
+// height outside the piece (0.9 of it from the curve), then the smaller ones.
 // The shorter curves are placed first: they have the fewer places. `crowded`,
 // when given, counts the labels that found no free place.
 inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Seam_label_request>& requests,
                                                             double size, const Segment_grid& cuts,
                                                             const std::vector<Pattern_drawing::Text>& fixed,
-                                                            std::size_t* crowded = nullptr)
+                                                            std::size_t* crowded = nullptr, double readable = 0,
+                                                            const Outside_labels* outside = nullptr)
 {
   typedef Pattern_drawing::P2 P2;
   typedef Pattern_drawing::Text Text;
   typedef std::array<P2, 4> Box;
-  const std::size_t places = 33;                    // along each curve
-  const std::array<double, 3> heights = {{1., 0.75, 0.5}};  // of `size`, tried in turn
+  const std::size_t places = 33;  // along each curve
+  // the heights tried in turn, and whether outside the piece: of `size` down
+  // to half of it, the readable ones first
+  std::vector<std::pair<double, bool>> tries;
+  const std::array<double, 3> heights = {{1., 0.75, 0.5}};
+  for(double h : heights)
+    if(h * size >= readable * (1 - 1e-9)) tries.push_back({h * size, false});
+  if(outside) tries.push_back({outside->readable, true});
+  for(double h : heights)
+    if(h * size < readable * (1 - 1e-9)) tries.push_back({h * size, false});
   const double margin = 0.1 * size;
 
   std::vector<Box> taken;
@@ -307,8 +328,8 @@ inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Se
       return points.empty() ? P2{{0., 0.}} : points.back();
     };
     // the label at arc length s, `height` high: along the chord of the curve
-    // over the label's width, into the piece
-    auto label_at = [&](double s, double height, P2& foot) {
+    // over the label's width, into the piece, or out of it
+    auto label_at = [&](double s, double height, bool out, P2& foot) {
       Text t;
       t.size = height;
       t.text = q.text;
@@ -320,19 +341,27 @@ inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Se
         a = points[0];
         b = points[1];
       }
-      const double sign = left.empty() || left[segment] ? 1. : -1.;
+      const double sign = (left.empty() || left[segment] ? 1. : -1.) * (out ? -1. : 1.);
       const double dx = b[0] - a[0], dy = b[1] - a[1], l = std::hypot(dx, dy);
-      const double d = 0.9 * height + q.beyond;
+      const double d = 0.9 * height + (out ? 0. : q.beyond);
       t.at = l > 0 ? P2{{foot[0] + sign * d * dy / l, foot[1] - sign * d * dx / l}} : foot;
       const double angle = std::atan2(dy, dx) * 180 / 3.141592653589793;
       t.angle = angle > 90 || angle < -90 ? angle + 180 : angle;
       return t;
     };
-    // how many things a label meets: other labels and texts count more than a cut line
-    auto conflicts = [&](const Text& t, const P2& foot) {
+    // how many things a label meets: other labels and texts, or the room of
+    // another piece, count more than a cut line
+    auto conflicts = [&](const Text& t, const P2& foot, bool out) {
       const Box box = text_box(t, margin);
       std::size_t c = 0;
       for(const Box& o : taken) c += convex_overlap(box, o) ? 2 : 0;
+      if(out)
+        for(const P2& corner : text_box(t))
+          if(!(corner[0] >= outside->room[0] && corner[0] <= outside->room[2] && corner[1] >= outside->room[1] &&
+               corner[1] <= outside->room[3])) {
+            c += 2;
+            break;
+          }
       // off the cut lines, and not behind another one seen from its curve
       const double l = std::hypot(t.at[0] - foot[0], t.at[1] - foot[1]);
       const double from = l > 0 ? (std::min)(1., 0.3 * t.size / l) : 0.;
@@ -344,23 +373,22 @@ inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Se
     bool placed = false;
     std::size_t least = 0;
     Text best;
-    for(double h : heights) {
+    for(std::size_t k = 0; k < tries.size() && !placed; ++k) {
       for(std::size_t j = 0; j < places && !placed; ++j) {
         // the middle, then alternately either side of it
         const double step = total / double(places - 1);
         const double s = total / 2 + (j % 2 == 1 ? 1. : -1.) * double((j + 1) / 2) * step;
         P2 foot;
-        const Text t = label_at(s, h * size, foot);
-        const std::size_t c = conflicts(t, foot);
+        const Text t = label_at(s, tries[k].first, tries[k].second, foot);
+        const std::size_t c = conflicts(t, foot, tries[k].second);
         if(c == 0) {
           best = t;
           placed = true;
-        } else if((h == heights[0] && j == 0) || c < least) {
+        } else if((k == 0 && j == 0) || c < least) {
           best = t;
           least = c;
         }
       }
-      if(placed) break;
     }
     if(!placed && crowded) ++*crowded;
     out[r] = best;

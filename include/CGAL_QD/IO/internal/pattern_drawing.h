@@ -404,8 +404,16 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         }
         requests.push_back(std::move(q));
       }
+      // a piece too small for readable labels gets them outside, within the
+      // room the layout keeps around it, where no tab or seam allowance is
+      internal::Outside_labels outside;
+      outside.readable = 0.5 * font;
+      outside.room = {{p.at[0], p.page * options.page_height + p.at[1], p.at[0] + p.size[0],
+                       p.page * options.page_height + p.at[1] + p.size[1]}};
+      const bool out = !options.tabs && !(options.seam_allowance > 0);
       std::size_t crowded = 0;
-      for(Pattern_drawing::Text& t : internal::place_seam_labels(requests, label, cuts, fixed, &crowded)) {
+      for(Pattern_drawing::Text& t :
+          internal::place_seam_labels(requests, label, cuts, fixed, &crowded, outside.readable, out ? &outside : nullptr)) {
         if(t.size < 0.5 * font * (1 - 1e-9)) ++crowded;  // too small to read
         piece.labels.push_back(std::move(t));
       }
