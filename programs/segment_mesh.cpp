@@ -375,7 +375,7 @@ int main(int argc, char** argv)
       const std::size_t count = pages.crowded_pieces.size(), listed = (std::min)(count, std::size_t(12));
       const double font =
           pattern.font_size > 0 ? pattern.font_size : (std::min)(pattern.page_width, pattern.page_height) / 60;
-      message << "  crowded        the labels of " << count << (count == 1 ? " piece" : " pieces") << " (";
+      message << "  crowded        the labels or numbers of " << count << (count == 1 ? " piece" : " pieces") << " (";
       for(std::size_t i = 0; i < listed; ++i) message << (i ? ", " : "") << pages.crowded_pieces[i];
       message << (listed < count ? ", ..." : "") << ") overlap or are under " << segment_mesh::text(font / 2) << ' '
               << pattern.units << " high for lack of room: a larger --size or --scale gives them room\n";

@@ -386,14 +386,28 @@ bool on_piece(const Drawn_piece& p, const QD::internal::Pattern_drawing::P2& x)
   return inside;
 }
 
-// every piece's number on the piece; no two seam labels of a piece
-// overlapping, none on the piece's number, none crossing a cut line
-void expect_labels_apart(const Drawn_pattern& d)
+// every piece's number on the piece, or, with `outside` (the height of the
+// texts of small pieces put outside them), beside it at that height; no two
+// seam labels of a piece overlapping, none on the piece's number, none
+// crossing a cut line
+void expect_labels_apart(const Drawn_pattern& d, double outside = 0, double spacing = 0)
 {
   using QD::internal::convex_overlap;
   using QD::internal::text_box;
   for(const Drawn_piece& p : d.pieces) {
-    BOOST_TEST(on_piece(p, p.id.at), "the number of piece " << p.chart << " is off the piece");
+    if(outside > 0 && !on_piece(p, p.id.at)) {
+      BOOST_TEST(p.id.size == outside, tt::tolerance(1e-6));
+      for(const auto& corner : text_box(p.id)) {  // off the piece's box, within half the spacing of it
+        const double reach = spacing / 2 + 1e-3;
+        BOOST_TEST((corner[0] >= p.x0 - reach && corner[0] <= p.x1 + reach), "piece " << p.chart);
+        BOOST_TEST((corner[1] >= p.y0 - reach && corner[1] <= p.y1 + reach), "piece " << p.chart);
+      }
+      const std::array<QD::internal::Pattern_drawing::P2, 4> box = {
+          {{{p.x0, p.y0}}, {{p.x1, p.y0}}, {{p.x1, p.y1}}, {{p.x0, p.y1}}}};
+      BOOST_TEST(!convex_overlap(text_box(p.id), box), "the number of piece " << p.chart << " is on its box");
+    } else {
+      BOOST_TEST(on_piece(p, p.id.at), "the number of piece " << p.chart << " is off the piece");
+    }
     const QD::internal::Segment_grid cuts(p.cut_lines, 1.);
     for(std::size_t a = 0; a < p.seam_labels.size(); ++a) {
       const auto box = text_box(p.seam_labels[a]);
@@ -1009,8 +1023,8 @@ BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
 // could be read (a quarter of a piece's smaller side, under half the font's
 // height), so each label goes outside its piece, half the font's height,
 // within the room the layout keeps around the piece, or the piece is named
-// (Pattern_result::crowded_pieces); at 400 mm every label is inside and no
-// piece is named. A piece less than 10 mm across gets lines of its own, a
+// (Pattern_result::crowded_pieces), and so does its number; at 400 mm every
+// label is inside and no piece is named. A piece less than 10 mm across gets lines of its own, a
 // fortieth of its smaller side, while the others keep 0.25 mm, also beside a
 // speck a few millimetres across
 BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
@@ -1093,13 +1107,23 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
     roomy.pieces.clear();
     for(const Drawn_piece& p : d.pieces)
       if(!std::binary_search(pr.crowded_pieces.begin(), pr.crowded_pieces.end(), p.chart)) roomy.pieces.push_back(p);
-    expect_labels_apart(roomy);
+    expect_labels_apart(roomy, half_font, options.spacing);
     for(std::size_t a = 0; a < roomy.pieces.size(); ++a)
-      for(std::size_t b = 0; b < a; ++b)
-        for(const auto& s : roomy.pieces[a].seam_labels)
-          for(const auto& t : roomy.pieces[b].seam_labels)
+      for(std::size_t b = 0; b < a; ++b) {
+        std::vector<QD::internal::Pattern_drawing::Text> sa = roomy.pieces[a].seam_labels,
+                                                         sb = roomy.pieces[b].seam_labels;
+        sa.push_back(roomy.pieces[a].id);
+        sb.push_back(roomy.pieces[b].id);
+        for(const auto& s : sa)
+          for(const auto& t : sb)
             BOOST_TEST(!QD::internal::convex_overlap(QD::internal::text_box(s), QD::internal::text_box(t)),
-                       "labels of pieces " << roomy.pieces[a].chart << " and " << roomy.pieces[b].chart);
+                       "texts of pieces " << roomy.pieces[a].chart << " and " << roomy.pieces[b].chart);
+      }
+    // the numbers too: each at least half the font's height, unless its piece is named
+    for(const Drawn_piece& p : d.pieces)
+      if(p.id.size < half_font * (1 - 1e-6))
+        BOOST_TEST(std::binary_search(pr.crowded_pieces.begin(), pr.crowded_pieces.end(), p.chart),
+                   "the number of piece " << p.chart);
     if(run == 0) BOOST_TEST(thin == d.pieces.size());
     if(run == 1) BOOST_TEST(thin == 0u);
     if(run == 2) BOOST_TEST(thin == 1u);  // the speck alone

@@ -12,7 +12,8 @@
 // smaller, as long as it stays readable; then, on a piece too small for
 // readable labels, outside the piece beside its curve, within the room the
 // layout keeps around the piece; then smaller inside. Where no place is
-// free, it takes the place that meets the fewest others.
+// free, it takes the place that meets the fewest others. A number too small
+// to be read inside goes beside the piece (`number_outside()`).
 
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
 
@@ -266,6 +267,62 @@ struct Outside_labels
   double readable = 0;
   std::array<double, 4> room{{0, 0, 0, 0}};
 };
+
+// The number of a piece too small for it to be read inside (`id` smaller than
+// `outside.readable`): that high, beside the piece's box `box` (x0, y0, x1,
+// y1), below or above it, right or left of it or at a corner, the first of
+// those within the room that overlaps none of the texts `taken`, or else the
+// first within the room (and `free` false); false, and `id` as it was, where
+// none is within the room.
+inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4>& box, const Outside_labels& outside,
+                           const std::vector<Pattern_drawing::Text>& taken, bool& free)
+{
+  typedef Pattern_drawing::P2 P2;
+  const double h = outside.readable, gap = 0.3 * h;
+  const double dy = gap + 0.375 * h, dx = gap + 0.35 * h * double(id.text.size());
+  // below and above the box at its middle, a quarter, three quarters and its
+  // ends, then right and left of it at its middle, a quarter and three
+  // quarters, then the corners
+  std::vector<P2> spots;
+  for(double f : {0.5, 0.25, 0.75, 0., 1.}) {
+    const double x = box[0] + f * (box[2] - box[0]);
+    spots.push_back(P2{{x, box[3] + dy}});
+    spots.push_back(P2{{x, box[1] - dy}});
+  }
+  for(double f : {0.5, 0.25, 0.75}) {
+    const double y = box[1] + f * (box[3] - box[1]);
+    spots.push_back(P2{{box[2] + dx, y}});
+    spots.push_back(P2{{box[0] - dx, y}});
+  }
+  for(double x : {box[2] + dx, box[0] - dx})
+    for(double y : {box[3] + dy, box[1] - dy}) spots.push_back(P2{{x, y}});
+  bool found = false;
+  Pattern_drawing::Text first;
+  for(const P2& at : spots) {
+    Pattern_drawing::Text t = id;
+    t.at = at;
+    t.size = h;
+    t.angle = 0;
+    const std::array<P2, 4> b = text_box(t, 0.1 * h);
+    bool within = true;
+    for(const P2& c : b)
+      within = within && c[0] >= outside.room[0] && c[0] <= outside.room[2] && c[1] >= outside.room[1] &&
+               c[1] <= outside.room[3];
+    if(!within) continue;
+    bool apart = true;
+    for(const Pattern_drawing::Text& o : taken) apart = apart && !convex_overlap(b, text_box(o));
+    if(apart) {
+      id = t;
+      free = true;
+      return true;
+    }
+    if(!found) first = t;
+    found = true;
+  }
+  if(found) id = first;
+  free = false;
+  return found;
+}
 
 // The labels of one piece at most `size` high, each `0.9 size + beyond` into
 // the piece from its curve and turned along it; `cuts` are the piece's cut

@@ -384,13 +384,24 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
                                             : largest;
       piece.id = {widest.first, size, 0., text};
     }
+    // a piece too small for labels and a number that can be read gets them
+    // outside, within the room the layout keeps around it, where no tab or
+    // seam allowance is
+    internal::Outside_labels outside;
+    outside.readable = 0.5 * font;
+    outside.room = {{p.at[0], p.page * options.page_height + p.at[1], p.at[0] + p.size[0],
+                     p.page * options.page_height + p.at[1] + p.size[1]}};
+    const bool out = !options.tabs && !(options.seam_allowance > 0);
+    std::size_t crowded = 0;
+    // a number too small to be read goes outside after the labels, where they left room
+    const bool number_out = out && piece.id.size < outside.readable * (1 - 1e-9);
     // seam labels inside the piece beside their curve, apart from one another
     // and from the texts already there, off the cut lines (label_placement.h)
     {
       const double label = (std::min)(font, side / 4);
       const internal::Segment_grid cuts(std::move(cut_segments), label);
       std::vector<Pattern_drawing::Text> fixed = piece.notch_labels;
-      fixed.push_back(piece.id);
+      if(!number_out) fixed.push_back(piece.id);
       // beyond the notches and their numbers if there are
       const double beyond = options.notch_spacing > 0 ? notch_length(k) + 1.2 * font : 0.;
       std::vector<internal::Seam_label_request> requests;
@@ -404,21 +415,25 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         }
         requests.push_back(std::move(q));
       }
-      // a piece too small for readable labels gets them outside, within the
-      // room the layout keeps around it, where no tab or seam allowance is
-      internal::Outside_labels outside;
-      outside.readable = 0.5 * font;
-      outside.room = {{p.at[0], p.page * options.page_height + p.at[1], p.at[0] + p.size[0],
-                       p.page * options.page_height + p.at[1] + p.size[1]}};
-      const bool out = !options.tabs && !(options.seam_allowance > 0);
-      std::size_t crowded = 0;
       for(Pattern_drawing::Text& t :
           internal::place_seam_labels(requests, label, cuts, fixed, &crowded, outside.readable, out ? &outside : nullptr)) {
-        if(t.size < 0.5 * font * (1 - 1e-9)) ++crowded;  // too small to read
+        if(t.size < outside.readable * (1 - 1e-9)) ++crowded;  // too small to read
         piece.labels.push_back(std::move(t));
       }
-      if(crowded > 0) result.crowded_pieces.push_back(k);
     }
+    if(number_out) {
+      std::vector<Pattern_drawing::Text> taken = piece.labels;
+      taken.insert(taken.end(), piece.notch_labels.begin(), piece.notch_labels.end());
+      bool free = false;
+      if(!internal::number_outside(
+             piece.id, {{outside.room[0] + pad, outside.room[1] + pad, outside.room[2] - pad, outside.room[3] - pad}},
+             outside, taken, free) ||
+         !free)
+        ++crowded;
+    } else if(piece.id.size < outside.readable * (1 - 1e-9)) {
+      ++crowded;
+    }
+    if(crowded > 0) result.crowded_pieces.push_back(k);
 #ifdef CGAL_QD_HAS_CLIPPER
     if(options.seam_allowance > 0) {
       std::vector<std::array<P2, 3>> triangles;
