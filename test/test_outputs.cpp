@@ -255,6 +255,7 @@ struct Drawn_piece
   std::vector<QD::internal::Pattern_drawing::Text> seam_labels;  // as drawn
   QD::internal::Pattern_drawing::Text id;
   std::vector<std::array<QD::internal::Pattern_drawing::P2, 2>> cut_lines;
+  std::vector<std::array<QD::internal::Pattern_drawing::P2, 2>> tab_lines;  // the outlines of its tabs
   void add(double x, double y)
   {
     x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
@@ -331,7 +332,12 @@ Drawn_pattern parse_pattern(std::istream& in, const Surface_mesh& tm, double sca
         ++d.tabs;
         std::istringstream pts(node.get<std::string>("<xmlattr>.points"));
         std::string xy;
-        while(pts >> xy) piece.add(std::stod(xy.substr(0, xy.find(','))), std::stod(xy.substr(xy.find(',') + 1)));
+        std::vector<QD::internal::Pattern_drawing::P2> outline;
+        while(pts >> xy) {
+          outline.push_back({{std::stod(xy.substr(0, xy.find(','))), std::stod(xy.substr(xy.find(',') + 1))}});
+          piece.add(outline.back()[0], outline.back()[1]);
+        }
+        for(std::size_t i = 0; i + 1 < outline.size(); ++i) piece.tab_lines.push_back({{outline[i], outline[i + 1]}});
       }
       if(child.first == "line") {
         const double ax = node.get<double>("<xmlattr>.x1"), ay = node.get<double>("<xmlattr>.y1"),
@@ -387,18 +393,23 @@ bool on_piece(const Drawn_piece& p, const QD::internal::Pattern_drawing::P2& x)
 }
 
 // every piece's number on the piece, or, with `outside` (the height of the
-// texts of small pieces put outside them), beside it at that height; no two
-// seam labels of a piece overlapping, none on the piece's number, none
-// crossing a cut line
-void expect_labels_apart(const Drawn_pattern& d, double outside = 0, double spacing = 0)
+// texts of small pieces put outside them), beside it at that height, within
+// `room` of the box of the piece and its tabs; no two seam labels of a piece
+// overlapping, none on the piece's number, none crossing a cut line or the
+// outline of a tab
+void expect_labels_apart(const Drawn_pattern& d, double outside = 0, double room = 0)
 {
   using QD::internal::convex_overlap;
   using QD::internal::text_box;
   for(const Drawn_piece& p : d.pieces) {
+    const QD::internal::Segment_grid tabs(p.tab_lines, 1.);
+    BOOST_TEST(!tabs.crosses(text_box(p.id)), "the number of piece " << p.chart << " crosses a tab");
+    for(const auto& t : p.seam_labels)
+      BOOST_TEST(!tabs.crosses(text_box(t)), "label " << t.text << " crosses a tab of piece " << p.chart);
     if(outside > 0 && !on_piece(p, p.id.at)) {
       BOOST_TEST(p.id.size == outside, tt::tolerance(1e-6));
-      for(const auto& corner : text_box(p.id)) {  // off the piece's box, within half the spacing of it
-        const double reach = spacing / 2 + 1e-3;
+      for(const auto& corner : text_box(p.id)) {  // off the piece's box, within its room
+        const double reach = room + 1e-3;
         BOOST_TEST((corner[0] >= p.x0 - reach && corner[0] <= p.x1 + reach), "piece " << p.chart);
         BOOST_TEST((corner[1] >= p.y0 - reach && corner[1] <= p.y1 + reach), "piece " << p.chart);
       }
@@ -1023,10 +1034,11 @@ BOOST_AUTO_TEST_CASE(patterns_leave_off_small_loose_pieces)
 // could be read (a quarter of a piece's smaller side, under half the font's
 // height), so each label goes outside its piece, half the font's height,
 // within the room the layout keeps around the piece, or the piece is named
-// (Pattern_result::crowded_pieces), and so does its number; at 400 mm every
-// label is inside and no piece is named. A piece less than 10 mm across gets lines of its own, a
-// fortieth of its smaller side, while the others keep 0.25 mm, also beside a
-// speck a few millimetres across
+// (Pattern_result::crowded_pieces), and so does its number; with tabs too,
+// on a tab or off them; at 400 mm every label is inside and no piece is
+// named. A piece less than 10 mm across gets lines of its own, a fortieth of
+// its smaller side, while the others keep 0.25 mm, also beside a speck a few
+// millimetres across
 BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
 {
   const Segmented& s = meshes().front();
@@ -1049,16 +1061,20 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
       speck_uv.push_back({{speck.point(target(h, speck)).x(), speck.point(target(h, speck)).y()}});
   }
   const double half_font = 0.5 * 210. / 60;  // A4, the default font size
-  for(int run = 0; run < 3; ++run) {
-    const Surface_mesh& tm = run < 2 ? s.tm : speck;
+  for(int run = 0; run < 4; ++run) {  // 5 mm, 400 mm, 400 mm with the speck, 5 mm with tabs
+    const Surface_mesh& tm = run != 2 ? s.tm : speck;
     QD::IO::Pattern_options options;
-    options.model_size = run == 0 ? 5. : 400.;
+    const bool small = run == 0 || run == 3;
+    options.model_size = small ? 5. : 400.;
+    options.tabs = run == 3;
+    // how far outside its box (with its tabs) a text of a piece may go
+    const double room = options.spacing / 2 + (options.tabs ? options.tab_width : 0);
     std::stringstream ss;
     const QD::IO::Pattern_result pr =
-        run < 2 ? QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
-                                             s.result.seam_edges, options)
-                : QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(speck_chart), speck_uv,
-                                             s.result.seam_edges, options);
+        run != 2 ? QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                              s.result.seam_edges, options)
+                 : QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(speck_chart), speck_uv,
+                                              s.result.seam_edges, options);
     BOOST_REQUIRE(pr);
     BOOST_TEST(pr.model_size == options.model_size, tt::tolerance(1e-12));
     BOOST_TEST(std::is_sorted(pr.crowded_pieces.begin(), pr.crowded_pieces.end()));
@@ -1074,20 +1090,21 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
         if(t.size < half_font * (1 - 1e-6))
           BOOST_TEST(crowded, "piece " << p.chart << " has a label under half the font's height");
         if(on_piece(p, t.at)) {
-          BOOST_TEST((run > 0 || crowded), "piece " << p.chart << " has a label inside at 5 mm");
+          BOOST_TEST((!small || crowded), "piece " << p.chart << " has a label inside at 5 mm");
           continue;
         }
         ++outside;
-        BOOST_TEST(run == 0, "a label of piece " << p.chart << " is outside at 400 mm");
+        BOOST_TEST(small, "a label of piece " << p.chart << " is outside at 400 mm");
         BOOST_TEST(t.size == half_font, tt::tolerance(1e-6));
-        for(const auto& corner : QD::internal::text_box(t)) {  // within half the spacing of the piece's box
-          const double reach = options.spacing / 2 + 1e-3;
+        for(const auto& corner : QD::internal::text_box(t)) {  // within the piece's room
+          const double reach = room + 1e-3;
           BOOST_TEST((corner[0] >= p.x0 - reach && corner[0] <= p.x1 + reach), "piece " << p.chart);
           BOOST_TEST((corner[1] >= p.y0 - reach && corner[1] <= p.y1 + reach), "piece " << p.chart);
         }
       }
-      if(run > 0) BOOST_TEST(!crowded, "piece " << p.chart << " at 400 mm");
+      if(!small) BOOST_TEST(!crowded, "piece " << p.chart << " at 400 mm");
       with_labels += !p.seam_labels.empty();
+      if(run == 3) continue;  // the box has the tabs
       // its own lines where it is less than 10 mm across
       const std::string scope = ".piece[data-chart=\"" + std::to_string(p.chart) + "\"] .cut{stroke:#000;stroke-width:";
       const std::size_t at = style.find(scope);
@@ -1101,13 +1118,13 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
       }
     }
     BOOST_TEST(with_labels > 0u);
-    if(run == 0) BOOST_TEST(outside > pr.crowded_pieces.size());
+    if(small) BOOST_TEST(outside > pr.crowded_pieces.size());
     // the labels of the pieces not named lie apart, from those of other pieces too
     Drawn_pattern roomy = d;
     roomy.pieces.clear();
     for(const Drawn_piece& p : d.pieces)
       if(!std::binary_search(pr.crowded_pieces.begin(), pr.crowded_pieces.end(), p.chart)) roomy.pieces.push_back(p);
-    expect_labels_apart(roomy, half_font, options.spacing);
+    expect_labels_apart(roomy, half_font, room);
     for(std::size_t a = 0; a < roomy.pieces.size(); ++a)
       for(std::size_t b = 0; b < a; ++b) {
         std::vector<QD::internal::Pattern_drawing::Text> sa = roomy.pieces[a].seam_labels,

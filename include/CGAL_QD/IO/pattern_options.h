@@ -193,11 +193,12 @@ struct Pattern_result
   std::vector<Assembly_step> assembly;
   /// every labelled seam curve, in label order; the assembly page lists those not `matched`
   std::vector<Pattern_seam> seams;
-  /// the pieces too small at this scale for their seam labels, by chart id: a label that found no
-  /// place apart from the others, the piece's number and the cut lines, inside the piece or outside
-  /// it, or one drawn inside smaller than half the largest label height (`Pattern_options::font_size`,
-  /// or 1/60 of the page's smaller side), since labels inside are at most a quarter of a piece's
-  /// smaller side. A larger scale gives them room.
+  /// the pieces too small at this scale for their seam labels and number, by chart id: a label that
+  /// found no place apart from the others, the piece's number and the cut lines, inside the piece or
+  /// outside it; a number outside that found none apart from the labels; or a label or number drawn
+  /// smaller than half the largest label height (`Pattern_options::font_size`, or 1/60 of the page's
+  /// smaller side), since texts inside are at most a quarter (labels) or a third (numbers) of a
+  /// piece's smaller side. A larger scale gives them room.
   std::vector<std::size_t> crowded_pieces;
 
   explicit operator bool() const { return status == Error_code::OK; }

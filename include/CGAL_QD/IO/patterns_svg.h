@@ -81,9 +81,10 @@ namespace IO {
 ///   id or a notch number or crossing a cut line (smaller, down to half its
 ///   height, where it must), so the pieces can be matched. A piece too small
 ///   for labels of half the largest height gets them outside, beside their
-///   curves, within half of `spacing` of the piece (not with tabs or a seam
-///   allowance); the pieces still too small for their labels at the scale
-///   are listed in `Pattern_result::crowded_pieces`;
+///   curves, and its number beside its box, within the room the layout keeps
+///   around the piece (on a tab or off the tabs; not with a seam allowance);
+///   the pieces still too small for their labels at the scale are listed in
+///   `Pattern_result::crowded_pieces`;
 /// - with `tabs`, a glue tab outside one side of every seam edge;
 /// - with `seam_allowance` (needs Clipper: `CGAL_QD_HAS_CLIPPER`; otherwise
 ///   `INVALID_ARGUMENT`), the outline of the points within that distance of the
@@ -99,7 +100,9 @@ namespace IO {
 ///   `min_fold_length` long on the page, or a shorter one between the cut line
 ///   and other fold lines (see `Pattern_options::min_fold_length`);
 /// - the chart id where the piece is widest (the point inside it farthest
-///   from its cut lines), smaller where it would reach them (down to half);
+///   from its cut lines), smaller where it would reach them (down to half),
+///   or, where that is under half the largest label height, at that height
+///   beside the piece's box, apart from its labels and off the tabs' outlines;
 /// - unless `options.assembly_page` is false, a last page lists the order in
 ///   which to join the pieces (`Pattern_result::assembly`): outward from the
 ///   largest piece (by 3D area), each step the piece that shares the longest

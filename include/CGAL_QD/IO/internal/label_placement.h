@@ -270,34 +270,44 @@ struct Outside_labels
 
 // The number of a piece too small for it to be read inside (`id` smaller than
 // `outside.readable`): that high, beside the piece's box `box` (x0, y0, x1,
-// y1), below or above it, right or left of it or at a corner, the first of
-// those within the room that overlaps none of the texts `taken`, or else the
-// first within the room (and `free` false); false, and `id` as it was, where
-// none is within the room.
+// y1), below or above it, right or left of it or at a corner, next to the
+// box and then at the room's edge, the first of
+// those within the room that overlaps none of the texts `taken` and crosses
+// none of the lines `cuts` (the tabs' outlines), or else the first within the
+// room (and `free` false); false, and `id` as it was, where none is within
+// the room.
 inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4>& box, const Outside_labels& outside,
-                           const std::vector<Pattern_drawing::Text>& taken, bool& free)
+                           const std::vector<Pattern_drawing::Text>& taken, const Segment_grid& cuts, bool& free)
 {
   typedef Pattern_drawing::P2 P2;
-  const double h = outside.readable, gap = 0.3 * h;
-  const double dy = gap + 0.375 * h, dx = gap + 0.35 * h * double(id.text.size());
+  const double h = outside.readable, gap = 0.3 * h, half_w = 0.35 * h * double(id.text.size()),
+               half_h = 0.375 * h;
   // below and above the box at its middle, a quarter, three quarters and its
   // ends, then right and left of it at its middle, a quarter and three
-  // quarters, then the corners
+  // quarters, then the corners: next to the box, then at the room's edge
+  // (beyond the tabs)
   std::vector<P2> spots;
-  for(double f : {0.5, 0.25, 0.75, 0., 1.}) {
-    const double x = box[0] + f * (box[2] - box[0]);
-    spots.push_back(P2{{x, box[3] + dy}});
-    spots.push_back(P2{{x, box[1] - dy}});
+  for(int far = 0; far < 2; ++far) {
+    const double dy = far ? (std::min)(box[1] - outside.room[1], outside.room[3] - box[3]) - half_h - gap / 2
+                          : gap + half_h,
+                 dx = far ? (std::min)(box[0] - outside.room[0], outside.room[2] - box[2]) - half_w - gap / 2
+                          : gap + half_w;
+    if(far && !(dy > gap + half_h || dx > gap + half_w)) break;
+    for(double f : {0.5, 0.25, 0.75, 0., 1.}) {
+      const double x = box[0] + f * (box[2] - box[0]);
+      spots.push_back(P2{{x, box[3] + dy}});
+      spots.push_back(P2{{x, box[1] - dy}});
+    }
+    for(double f : {0.5, 0.25, 0.75}) {
+      const double y = box[1] + f * (box[3] - box[1]);
+      spots.push_back(P2{{box[2] + dx, y}});
+      spots.push_back(P2{{box[0] - dx, y}});
+    }
+    for(double x : {box[2] + dx, box[0] - dx})
+      for(double y : {box[3] + dy, box[1] - dy}) spots.push_back(P2{{x, y}});
   }
-  for(double f : {0.5, 0.25, 0.75}) {
-    const double y = box[1] + f * (box[3] - box[1]);
-    spots.push_back(P2{{box[2] + dx, y}});
-    spots.push_back(P2{{box[0] - dx, y}});
-  }
-  for(double x : {box[2] + dx, box[0] - dx})
-    for(double y : {box[3] + dy, box[1] - dy}) spots.push_back(P2{{x, y}});
   bool found = false;
-  Pattern_drawing::Text first;
+  Pattern_drawing::Text first = id;
   for(const P2& at : spots) {
     Pattern_drawing::Text t = id;
     t.at = at;
@@ -309,7 +319,7 @@ inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4
       within = within && c[0] >= outside.room[0] && c[0] <= outside.room[2] && c[1] >= outside.room[1] &&
                c[1] <= outside.room[3];
     if(!within) continue;
-    bool apart = true;
+    bool apart = !cuts.crosses(text_box(t));
     for(const Pattern_drawing::Text& o : taken) apart = apart && !convex_overlap(b, text_box(o));
     if(apart) {
       id = t;

@@ -385,13 +385,16 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
       piece.id = {widest.first, size, 0., text};
     }
     // a piece too small for labels and a number that can be read gets them
-    // outside, within the room the layout keeps around it, where no tab or
-    // seam allowance is
+    // outside, within the room the layout keeps around it (on a tab or off
+    // the tabs; not with a seam allowance, whose cut line is there)
     internal::Outside_labels outside;
     outside.readable = 0.5 * font;
     outside.room = {{p.at[0], p.page * options.page_height + p.at[1], p.at[0] + p.size[0],
                      p.page * options.page_height + p.at[1] + p.size[1]}};
-    const bool out = !options.tabs && !(options.seam_allowance > 0);
+    const bool out = !(options.seam_allowance > 0);
+    // the outlines of the tabs are cut too: a text outside is on a tab or off them
+    for(const auto& t : piece.tabs)
+      for(int c = 0; c < 3; ++c) cut_segments.push_back({{t[c], t[c + 1]}});
     std::size_t crowded = 0;
     // a number too small to be read goes outside after the labels, where they left room
     const bool number_out = out && piece.id.size < outside.readable * (1 - 1e-9);
@@ -420,18 +423,18 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         if(t.size < outside.readable * (1 - 1e-9)) ++crowded;  // too small to read
         piece.labels.push_back(std::move(t));
       }
-    }
-    if(number_out) {
-      std::vector<Pattern_drawing::Text> taken = piece.labels;
-      taken.insert(taken.end(), piece.notch_labels.begin(), piece.notch_labels.end());
-      bool free = false;
-      if(!internal::number_outside(
-             piece.id, {{outside.room[0] + pad, outside.room[1] + pad, outside.room[2] - pad, outside.room[3] - pad}},
-             outside, taken, free) ||
-         !free)
+      if(number_out) {
+        std::vector<Pattern_drawing::Text> taken = piece.labels;
+        taken.insert(taken.end(), piece.notch_labels.begin(), piece.notch_labels.end());
+        bool free = false;
+        if(!internal::number_outside(
+               piece.id, {{outside.room[0] + pad, outside.room[1] + pad, outside.room[2] - pad, outside.room[3] - pad}},
+               outside, taken, cuts, free) ||
+           !free)
+          ++crowded;
+      } else if(piece.id.size < outside.readable * (1 - 1e-9)) {
         ++crowded;
-    } else if(piece.id.size < outside.readable * (1 - 1e-9)) {
-      ++crowded;
+      }
     }
     if(crowded > 0) result.crowded_pieces.push_back(k);
 #ifdef CGAL_QD_HAS_CLIPPER
