@@ -271,11 +271,10 @@ struct Outside_labels
 // The number of a piece too small for it to be read inside (`id` smaller than
 // `outside.readable`): that high, beside the piece's box `box` (x0, y0, x1,
 // y1), below or above it, right or left of it or at a corner, next to the
-// box and then at the room's edge, the first of
-// those within the room that overlaps none of the texts `taken` and crosses
-// none of the lines `cuts` (the tabs' outlines), or else the first within the
-// room (and `free` false); false, and `id` as it was, where none is within
-// the room.
+// box and then at the room's edge: the first of those within the room that
+// overlaps none of the texts `taken` and crosses none of the lines `cuts`
+// (the tabs' outlines), or else the first within the room (and `free` false);
+// false, and `id` as it was, where none is within the room.
 inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4>& box, const Outside_labels& outside,
                            const std::vector<Pattern_drawing::Text>& taken, const Segment_grid& cuts, bool& free)
 {
