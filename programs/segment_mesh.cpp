@@ -373,11 +373,9 @@ int main(int argc, char** argv)
     // the pieces too small at this size for their labels
     if(!pages.crowded_pieces.empty()) {
       const std::size_t count = pages.crowded_pieces.size(), listed = (std::min)(count, std::size_t(12));
-      const double font =
-          pattern.font_size > 0 ? pattern.font_size : (std::min)(pattern.page_width, pattern.page_height) / 60;
       message << "  crowded        the labels or numbers of " << count << (count == 1 ? " piece" : " pieces") << " (";
       for(std::size_t i = 0; i < listed; ++i) message << (i ? ", " : "") << pages.crowded_pieces[i];
-      message << (listed < count ? ", ..." : "") << ") overlap or are under " << segment_mesh::text(font / 2) << ' '
+      message << (listed < count ? ", ..." : "") << ") overlap or are under " << segment_mesh::text(pages.font_size / 2) << ' '
               << pattern.units << " high for lack of room: a larger --size or --scale gives them room\n";
     }
     // the order in which to join the pieces, as on the pattern's last page

@@ -1078,6 +1078,7 @@ BOOST_AUTO_TEST_CASE(patterns_name_the_pieces_too_small_for_their_labels)
     BOOST_REQUIRE(pr);
     BOOST_TEST(pr.model_size == options.model_size, tt::tolerance(1e-12));
     BOOST_TEST(std::is_sorted(pr.crowded_pieces.begin(), pr.crowded_pieces.end()));
+    BOOST_TEST(pr.font_size == 2 * half_font, tt::tolerance(1e-12));
     const std::string svg = ss.str();
     const std::string style = svg.substr(svg.find("<style>"), svg.find("</style>") - svg.find("<style>"));
     BOOST_TEST(style.rfind("<style>.cut{stroke:#000;stroke-width:0.2500;fill:none}", 0) == 0u);

@@ -200,6 +200,9 @@ struct Pattern_result
   /// smaller side), since texts inside are at most a quarter (labels) or a third (numbers) of a
   /// piece's smaller side. A larger scale gives them room.
   std::vector<std::size_t> crowded_pieces;
+  /// the largest label height, in drawing units: `Pattern_options::font_size`, or 1/60 of the page's
+  /// smaller side
+  double font_size = 0;
 
   explicit operator bool() const { return status == Error_code::OK; }
 };

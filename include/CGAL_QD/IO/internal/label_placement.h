@@ -260,26 +260,38 @@ inline void curve_polyline(const Seam_label_request& q, std::vector<Pattern_draw
   }
 }
 
-// Where the labels of a piece may go outside it: `readable` high, within
-// `room` (x0, y0, x1, y1), the box the layout keeps for the piece
-struct Outside_labels
+// How small the texts of a piece may be and where they may go: `readable`
+// the smallest height they can be read at; outside the piece, if `outside`,
+// within `room` (x0, y0, x1, y1), the box the layout keeps for the piece
+struct Label_room
 {
   double readable = 0;
+  bool outside = false;
   std::array<double, 4> room{{0, 0, 0, 0}};
+
+  // whether a text `height` high is too small to be read
+  bool unreadable(double height) const { return height < readable * (1 - 1e-9); }
+  // whether every corner of `box` is within the room
+  bool holds(const std::array<Pattern_drawing::P2, 4>& box) const
+  {
+    for(const Pattern_drawing::P2& c : box)
+      if(!(c[0] >= room[0] && c[0] <= room[2] && c[1] >= room[1] && c[1] <= room[3])) return false;
+    return true;
+  }
 };
 
 // The number of a piece too small for it to be read inside (`id` smaller than
-// `outside.readable`): that high, beside the piece's box `box` (x0, y0, x1,
+// `room.readable`): that high, beside the piece's box `box` (x0, y0, x1,
 // y1), below or above it, right or left of it or at a corner, next to the
 // box and then at the room's edge: the first of those within the room that
 // overlaps none of the texts `taken` and crosses none of the lines `cuts`
 // (the tabs' outlines), or else the first within the room (and `free` false);
 // false, and `id` as it was, where none is within the room.
-inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4>& box, const Outside_labels& outside,
+inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4>& box, const Label_room& room,
                            const std::vector<Pattern_drawing::Text>& taken, const Segment_grid& cuts, bool& free)
 {
   typedef Pattern_drawing::P2 P2;
-  const double h = outside.readable, gap = 0.3 * h, half_w = 0.35 * h * double(id.text.size()),
+  const double h = room.readable, gap = 0.3 * h, half_w = 0.35 * h * double(id.text.size()),
                half_h = 0.375 * h;
   // below and above the box at its middle, a quarter, three quarters and its
   // ends, then right and left of it at its middle, a quarter and three
@@ -287,9 +299,9 @@ inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4
   // (beyond the tabs)
   std::vector<P2> spots;
   for(int far = 0; far < 2; ++far) {
-    const double dy = far ? (std::min)(box[1] - outside.room[1], outside.room[3] - box[3]) - half_h - gap / 2
+    const double dy = far ? (std::min)(box[1] - room.room[1], room.room[3] - box[3]) - half_h - gap / 2
                           : gap + half_h,
-                 dx = far ? (std::min)(box[0] - outside.room[0], outside.room[2] - box[2]) - half_w - gap / 2
+                 dx = far ? (std::min)(box[0] - room.room[0], room.room[2] - box[2]) - half_w - gap / 2
                           : gap + half_w;
     if(far && !(dy > gap + half_h || dx > gap + half_w)) break;
     for(double f : {0.5, 0.25, 0.75, 0., 1.}) {
@@ -313,11 +325,7 @@ inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4
     t.size = h;
     t.angle = 0;
     const std::array<P2, 4> b = text_box(t, 0.1 * h);
-    bool within = true;
-    for(const P2& c : b)
-      within = within && c[0] >= outside.room[0] && c[0] <= outside.room[2] && c[1] >= outside.room[1] &&
-               c[1] <= outside.room[3];
-    if(!within) continue;
+    if(!room.holds(b)) continue;
     bool apart = !cuts.crosses(text_box(t));
     for(const Pattern_drawing::Text& o : taken) apart = apart && !convex_overlap(b, text_box(o));
     if(apart) {
@@ -336,15 +344,16 @@ inline bool number_outside(Pattern_drawing::Text& id, const std::array<double, 4
 // The labels of one piece at most `size` high, each `0.9 size + beyond` into
 // the piece from its curve and turned along it; `cuts` are the piece's cut
 // lines, `fixed` the texts already on the piece (its number, notch numbers).
-// Heights of `readable` and more are tried first, then, with `outside`, its
-// height outside the piece (0.9 of it from the curve), then the smaller ones.
+// Heights of `room.readable` and more are tried first, then, if texts may go
+// outside, that height outside the piece (0.9 of it from the curve) within
+// `room.room`, then the smaller heights inside.
 // The shorter curves are placed first: they have the fewer places. `crowded`,
 // when given, counts the labels that found no free place.
 inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Seam_label_request>& requests,
                                                             double size, const Segment_grid& cuts,
                                                             const std::vector<Pattern_drawing::Text>& fixed,
-                                                            std::size_t* crowded = nullptr, double readable = 0,
-                                                            const Outside_labels* outside = nullptr)
+                                                            std::size_t* crowded = nullptr,
+                                                            const Label_room& room = Label_room())
 {
   typedef Pattern_drawing::P2 P2;
   typedef Pattern_drawing::Text Text;
@@ -355,10 +364,10 @@ inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Se
   std::vector<std::pair<double, bool>> tries;
   const std::array<double, 3> heights = {{1., 0.75, 0.5}};
   for(double h : heights)
-    if(h * size >= readable * (1 - 1e-9)) tries.push_back({h * size, false});
-  if(outside) tries.push_back({outside->readable, true});
+    if(!room.unreadable(h * size)) tries.push_back({h * size, false});
+  if(room.outside) tries.push_back({room.readable, true});
   for(double h : heights)
-    if(h * size < readable * (1 - 1e-9)) tries.push_back({h * size, false});
+    if(room.unreadable(h * size)) tries.push_back({h * size, false});
   const double margin = 0.1 * size;
 
   std::vector<Box> taken;
@@ -421,13 +430,7 @@ inline std::vector<Pattern_drawing::Text> place_seam_labels(const std::vector<Se
       const Box box = text_box(t, margin);
       std::size_t c = 0;
       for(const Box& o : taken) c += convex_overlap(box, o) ? 2 : 0;
-      if(out)
-        for(const P2& corner : text_box(t))
-          if(!(corner[0] >= outside->room[0] && corner[0] <= outside->room[2] && corner[1] >= outside->room[1] &&
-               corner[1] <= outside->room[3])) {
-            c += 2;
-            break;
-          }
+      if(out && !room.holds(text_box(t))) c += 2;
       // off the cut lines, and not behind another one seen from its curve
       const double l = std::hypot(t.at[0] - foot[0], t.at[1] - foot[1]);
       const double from = l > 0 ? (std::min)(1., 0.3 * t.size / l) : 0.;

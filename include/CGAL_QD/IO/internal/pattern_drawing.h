@@ -302,6 +302,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.line_width = line;
   drawing.seam_allowance = options.seam_allowance;
   drawing.font_size = font;
+  result.font_size = font;
   drawing.millimetre = mm;
   drawing.pieces.clear();
   drawing.assembly.clear();
@@ -387,17 +388,17 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     // a piece too small for labels and a number that can be read gets them
     // outside, within the room the layout keeps around it (on a tab or off
     // the tabs; not with a seam allowance, whose cut line is there)
-    internal::Outside_labels outside;
-    outside.readable = 0.5 * font;
-    outside.room = {{p.at[0], p.page * options.page_height + p.at[1], p.at[0] + p.size[0],
-                     p.page * options.page_height + p.at[1] + p.size[1]}};
-    const bool out = !(options.seam_allowance > 0);
+    internal::Label_room room;
+    room.readable = 0.5 * font;
+    room.outside = !(options.seam_allowance > 0);
+    room.room = {{p.at[0], p.page * options.page_height + p.at[1], p.at[0] + p.size[0],
+                  p.page * options.page_height + p.at[1] + p.size[1]}};
     // the outlines of the tabs are cut too: a text outside is on a tab or off them
     for(const auto& t : piece.tabs)
       for(int c = 0; c < 3; ++c) cut_segments.push_back({{t[c], t[c + 1]}});
     std::size_t crowded = 0;
     // a number too small to be read goes outside after the labels, where they left room
-    const bool number_out = out && piece.id.size < outside.readable * (1 - 1e-9);
+    const bool number_out = room.outside && room.unreadable(piece.id.size);
     // seam labels inside the piece beside their curve, apart from one another
     // and from the texts already there, off the cut lines (label_placement.h)
     {
@@ -418,9 +419,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         }
         requests.push_back(std::move(q));
       }
-      for(Pattern_drawing::Text& t :
-          internal::place_seam_labels(requests, label, cuts, fixed, &crowded, outside.readable, out ? &outside : nullptr)) {
-        if(t.size < outside.readable * (1 - 1e-9)) ++crowded;  // too small to read
+      for(Pattern_drawing::Text& t : internal::place_seam_labels(requests, label, cuts, fixed, &crowded, room)) {
+        if(room.unreadable(t.size)) ++crowded;
         piece.labels.push_back(std::move(t));
       }
       if(number_out) {
@@ -428,11 +428,11 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
         taken.insert(taken.end(), piece.notch_labels.begin(), piece.notch_labels.end());
         bool free = false;
         if(!internal::number_outside(
-               piece.id, {{outside.room[0] + pad, outside.room[1] + pad, outside.room[2] - pad, outside.room[3] - pad}},
-               outside, taken, cuts, free) ||
+               piece.id, {{room.room[0] + pad, room.room[1] + pad, room.room[2] - pad, room.room[3] - pad}}, room,
+               taken, cuts, free) ||
            !free)
           ++crowded;
-      } else if(piece.id.size < outside.readable * (1 - 1e-9)) {
+      } else if(room.unreadable(piece.id.size)) {
         ++crowded;
       }
     }
