@@ -109,6 +109,7 @@ int main(int argc, char** argv)
   pattern.scale = o.scale;
   pattern.tabs = o.tabs;
   pattern.assembly_page = o.assembly_page;
+  pattern.scale_check = o.scale_check;
   pattern.fold_angle = o.fold_angle * 3.141592653589793 / 180;
   const double mm_per_unit = CGAL_QD::IO::millimetres_per_unit(pattern.units);
   double page_mm[2] = {210, 297};
@@ -370,6 +371,11 @@ int main(int argc, char** argv)
               << " pages: cut along the grey frames and match the half diamonds";
     message << "), segmentation.svg" << (viewer ? ", viewer.html (open it in a browser)" : "")
             << " and report.json into " << dir.string() << "\n";
+    // how to print it
+    if(pdf && pages.scale_check > 0)
+      message << "  print          patterns.pdf at 100 % (\"actual size\", not fit to page): the bars in the "
+                 "bottom-left corner of every page are then "
+              << segment_mesh::text(pages.scale_check) << ' ' << pattern.units << " long\n";
     // the pieces too small at this size for their labels
     if(!pages.crowded_pieces.empty()) {
       const std::size_t count = pages.crowded_pieces.size(), listed = (std::min)(count, std::size_t(12));

@@ -32,6 +32,7 @@ struct Options
   std::string page = "a4";
   bool tabs = false;
   bool assembly_page = true;
+  bool scale_check = true;
   double fold_angle = 10;  // degrees
   std::string min_fold_length = "5%";  // a length with its unit, or a share of the model's size
   std::string notches;  // the spacing of the notches, a length with its unit
@@ -173,6 +174,10 @@ inline void add_options(CLI::App& app, Options& o)
       ->group(pattern);
   app.add_flag("!--no-assembly-page", o.assembly_page,
                "Leave out the last page, which lists the order in which to join the pieces")
+      ->group(pattern);
+  app.add_flag("!--no-scale-check", o.scale_check,
+               "Leave out the bars in the bottom-left corner of every page (50 mm, or 2 in with --units in) that "
+               "measure whether the pattern printed at its real size")
       ->group(pattern);
 
   const char* segmentation = "Segmentation";

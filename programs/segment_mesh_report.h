@@ -142,6 +142,7 @@ Json report(const Result& r, const CGAL_QD::Repair_report& input, const Smoothin
                      {"fold_lines", p.fold_lines},
                      {"min_fold_length", number(p.min_fold_length)},
                      {"seam_allowance", number(patterns.seam_allowance)},
+                     {"scale_check", number(p.scale_check)},
                      {"pdf", patterns.pdf}};
     Json seams = Json::array();
     for(const CGAL_QD::IO::Pattern_seam& seam : p.seams)

@@ -278,7 +278,9 @@ std::vector<const boost::property_tree::ptree*> piece_groups(const boost::proper
 {
   std::vector<const boost::property_tree::ptree*> groups;
   for(const auto& child : svg) {
-    if(child.first == "g" && child.second.get<std::string>("<xmlattr>.class") != "part") groups.push_back(&child.second);
+    if(child.first == "g" && child.second.get<std::string>("<xmlattr>.class") != "part" &&
+       child.second.get<std::string>("<xmlattr>.class") != "check")
+      groups.push_back(&child.second);
     if(child.first == "defs")
       for(const auto& def : child.second)
         if(def.first == "g") groups.push_back(&def.second);
@@ -670,6 +672,83 @@ BOOST_AUTO_TEST_CASE(patterns_take_a_model_size_and_units)
   if(!pr.reduced_to_fit) BOOST_TEST(pr.model_size == 200 / 25.4, tt::tolerance(1e-12));
   BOOST_TEST(ss.str().find("width=\"8.5000in\"") != std::string::npos);
   expect_pieces_apart_within_margins(parse_pattern(ss, s.tm, pr.scale, pr.number_of_pages), options.page_margin);
+}
+
+// The scale check: on every page, in its bottom-left corner, a bar along the
+// bottom margin and one up the left margin from the same corner, of the
+// round length named beside them, with ticks into the page; within the
+// margins, its text before the page number; shorter on a narrow page, none on
+// a margin too thin or when not asked for
+BOOST_AUTO_TEST_CASE(patterns_carry_a_scale_check_on_every_page)
+{
+  const Segmented& s = meshes().back();
+  const auto chart = boost::make_assoc_property_map(const_cast<Chart_map&>(s.chart));
+  auto check = [&](const QD::IO::Pattern_options& options, double length, const std::string& text) {
+    BOOST_TEST_CONTEXT(options.units << ", " << options.page_width << " x " << options.page_height << ", margin "
+                                     << options.page_margin) {
+      std::stringstream ss;
+      const QD::IO::Pattern_result pr =
+          QD::IO::write_patterns_SVG(ss, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
+      BOOST_REQUIRE(pr);
+      BOOST_TEST(pr.scale_check == length, tt::tolerance(1e-12));
+      boost::property_tree::ptree tree;
+      BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+      const double w = options.page_width, ph = options.page_height, m = options.page_margin;
+      std::size_t groups = 0;
+      for(const auto& child : tree.get_child("svg")) {
+        if(child.first != "g" || child.second.get<std::string>("<xmlattr>.class") != "check") continue;
+        const double top = ph * double(groups++);  // one group per page, in page order
+        double horizontal = 0, vertical = 0, label_y = 0;
+        std::size_t lines = 0;
+        std::string label;
+        for(const auto& node : child.second) {
+          if(node.first == "text") {
+            label = node.second.data();
+            label_y = node.second.get<double>("<xmlattr>.y") - top;
+            BOOST_TEST(node.second.get<double>("<xmlattr>.x") + 0.35 * text.size() * node.second.get<double>("<xmlattr>.font-size") < w / 2);
+            continue;
+          }
+          if(node.first != "line") continue;
+          ++lines;
+          const double x1 = node.second.get<double>("<xmlattr>.x1"), y1 = node.second.get<double>("<xmlattr>.y1") - top,
+                       x2 = node.second.get<double>("<xmlattr>.x2"), y2 = node.second.get<double>("<xmlattr>.y2") - top;
+          // in the page's bottom or left margin
+          for(const std::array<double, 2> p : {std::array<double, 2>{{x1, y1}}, std::array<double, 2>{{x2, y2}}}) {
+            BOOST_TEST((p[0] >= 0 && p[0] <= w && p[1] >= 0 && p[1] <= ph));
+            BOOST_TEST((p[0] <= m + 1e-9 || p[1] >= ph - m - 1e-9));
+          }
+          if(y1 == y2) horizontal = (std::max)(horizontal, std::abs(x2 - x1));
+          if(x1 == x2) vertical = (std::max)(vertical, std::abs(y2 - y1));
+        }
+        BOOST_TEST(horizontal == length, tt::tolerance(1e-9));
+        BOOST_TEST(vertical == length, tt::tolerance(1e-9));
+        BOOST_TEST(lines >= 6u);  // two bars and ticks
+        BOOST_TEST(label == text);
+        BOOST_TEST(label_y == ph - m / 2, tt::tolerance(1e-9));
+      }
+      BOOST_TEST(groups == (length > 0 ? pr.number_of_pages : 0u));
+    }
+  };
+  QD::IO::Pattern_options options;
+  check(options, 50, "50 mm at 100 %");
+  options.units = "cm";
+  options.page_width = 21, options.page_height = 29.7, options.page_margin = 1, options.spacing = 0.6;
+  options.tab_width = 0.5;
+  check(options, 5, "5 cm at 100 %");
+  options = QD::IO::Pattern_options();
+  options.units = "in";
+  options.page_width = 8.5, options.page_height = 11, options.page_margin = 0.4, options.spacing = 0.25;
+  check(options, 2, "2 in at 100 %");
+  // a page 100 mm wide has room for 20 mm before its page number
+  options = QD::IO::Pattern_options();
+  options.page_width = 100, options.page_height = 150, options.model_size = 80;
+  check(options, 20, "20 mm at 100 %");
+  options = QD::IO::Pattern_options();
+  options.page_margin = 3;
+  check(options, 0, "");
+  options = QD::IO::Pattern_options();
+  options.scale_check = false;
+  check(options, 0, "");
 }
 
 // A piece larger than a page, in parts: every part on a page of its own,
@@ -1701,6 +1780,19 @@ BOOST_AUTO_TEST_CASE(pdf_pattern_prints_at_true_scale)
   // 100 mm and the 0.25 mm line: 1002.5 pixels, within 0.3 mm
   BOOST_TEST(std::abs(right - left + 1 - 1002.5) <= 3);
   BOOST_TEST(std::abs(bottom - top + 1 - 1002.5) <= 3);
+  // the scale check's bars, grey (100 to 140), in the margins of the
+  // bottom-left corner: 50 mm and their 0.25 mm ticks at the ends
+  int first = height, last = -1, longest = 0;
+  for(int y = 0; y < height; ++y)
+    for(int x = 0, run = 0; x < width; ++x) {
+      const bool grey = pixels[std::size_t(y) * width + x] < 140;
+      if(grey && x < 100) first = std::min(first, y), last = std::max(last, y);
+      run = grey ? run + 1 : 0;
+      if(y >= 2870) longest = std::max(longest, run);
+    }
+  BOOST_TEST_MESSAGE("the scale check prints " << longest / 10. << " x " << (last - first + 1) / 10. << " mm");
+  BOOST_TEST(std::abs(longest - 502.5) <= 3);
+  BOOST_TEST(std::abs(last - first + 1 - 502.5) <= 3);
   std::filesystem::remove_all(dir);
 }
 

@@ -18,7 +18,7 @@ if(NOT code EQUAL 0)
 endif()
 foreach(expected
     "--out-dir DIR" "--size LENGTH" "--scale S" "--units TEXT:{mm,cm,in,pt,pc,px}=mm" "--page TEXT:{a4,a3,letter}=a4"
-    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--min-fold-length LENGTH=5%" "--min-loose-piece LENGTH=2mm" "--no-assembly-page" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
+    "--tabs" "--notches LENGTH" "--seam-allowance LENGTH" "--fold-angle DEGREES:FLOAT in [0 - 180]=10" "--min-fold-length LENGTH=5%" "--min-loose-piece LENGTH=2mm" "--no-assembly-page" "--no-scale-check" "--vsa-tolerance T:POSITIVE=0.25" "--max-area-distortion A:POSITIVE=0.1" "--max-stretch L2:POSITIVE=2"
     "--max-local-area-distortion A_LOC:POSITIVE=0.025" "--criterion TEXT:{lpfb-ip-arap,lpfb-ip}=lpfb-ip-arap"
     "--area-preservation ALPHA:0..1=0.5" "--arap-border TEXT:{free,keep-lengths}=free" "--merge-order TEXT:{smallest,largest,relative,compact}=smallest"
     "--denoise,--no-denoise" "--no-refine" "--no-merge" "--no-smooth-seams" "--no-shorten-cuts" "--sequential" "--json" "--verbose"
@@ -160,6 +160,14 @@ else()
     string(APPEND failures "report.json: seam_allowance '${drawn_allowance}'\n")
   endif()
   string(JSON pdf GET "${report}" patterns pdf)
+  # the scale check: 50 mm bars on A4, which the summary names with the PDF
+  string(JSON check GET "${report}" patterns scale_check)
+  if(NOT check EQUAL 50)
+    string(APPEND failures "report.json: scale_check '${check}' on A4 in mm\n")
+  endif()
+  if(pdf AND NOT summary MATCHES "print          patterns.pdf at 100 % [^\n]* then 50 mm long")
+    string(APPEND failures "the summary does not say how to check the printed scale: ${summary}\n")
+  endif()
   string(JSON left LENGTH "${report}" patterns left_out_pieces)
   if(NOT left EQUAL 0)
     string(APPEND failures "report.json: ${left} loose pieces left out of a mesh in one piece\n")
@@ -228,7 +236,8 @@ endforeach()
 # loose specks beside a model: the cube (12 cm on the page) with three loose
 # triangles 0.01 of its side across (1.2 mm) and one a third of it (4 cm):
 # the specks are left off the pattern and out of the assembly, and the
-# summary says so; with --min-loose-piece 0 every piece is drawn
+# summary says so; with --min-loose-piece 0 every piece is drawn (and, with
+# --no-scale-check, no scale check)
 file(WRITE "${WORK_DIR}/cube_specks.off"
      "OFF\n20 16 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
      "3 0 0\n3.01 0 0\n3 0.01 0\n4 0 0\n4.01 0 0\n4 0.01 0\n5 0 0\n5.01 0 0\n5 0.01 0\n"
@@ -236,8 +245,12 @@ file(WRITE "${WORK_DIR}/cube_specks.off"
      "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n"
      "3 8 9 10\n3 11 12 13\n3 14 15 16\n3 17 18 19\n")
 foreach(bound 2mm 0)
+  set(no_check)
+  if(bound STREQUAL "0")
+    set(no_check --no-scale-check)
+  endif()
   execute_process(COMMAND "${PROGRAM}" "${WORK_DIR}/cube_specks.off" --no-merge --scale 120 --min-loose-piece ${bound}
-                          --out-dir "${WORK_DIR}/cube_specks_${bound}"
+                          ${no_check} --out-dir "${WORK_DIR}/cube_specks_${bound}"
                   RESULT_VARIABLE code OUTPUT_VARIABLE summary ERROR_VARIABLE err)
   if(NOT code EQUAL 0 OR NOT EXISTS "${WORK_DIR}/cube_specks_${bound}/report.json")
     string(APPEND failures "the cube with specks, --min-loose-piece ${bound}: exit code ${code}, stderr '${err}'\n")
@@ -254,6 +267,13 @@ foreach(bound 2mm 0)
     if(NOT summary MATCHES "; 3 loose pieces shorter than 2 mm left out, --min-loose-piece 0 draws them")
       string(APPEND failures "the cube with specks: the summary does not say the specks were left out: ${summary}\n")
     endif()
+  endif()
+  string(JSON check GET "${report}" patterns scale_check)
+  file(READ "${WORK_DIR}/cube_specks_${bound}/patterns.svg" svg)
+  string(FIND "${svg}" "class=\"check\"" check_at)
+  if((no_check AND (NOT check EQUAL 0 OR check_at GREATER -1 OR summary MATCHES "print          "))
+     OR (NOT no_check AND (NOT check EQUAL 50 OR check_at LESS 0)))
+    string(APPEND failures "the cube with specks, '${no_check}': scale_check ${check}, in patterns.svg at ${check_at}\n")
   endif()
   math(EXPR expected_steps "${charts} - ${expected_left}")
   if(NOT charts EQUAL 10 OR NOT left EQUAL expected_left OR NOT steps EQUAL expected_steps)

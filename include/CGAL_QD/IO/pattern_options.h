@@ -93,6 +93,12 @@ struct Pattern_options
   double min_loose_piece_size = 0;
   /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
   bool assembly_page = true;
+  /// a scale check in the bottom-left corner of every page, in the margins: two bars of the same
+  /// length from the corner, along the bottom margin and up the left one, with their length written
+  /// beside ("50 mm at 100 %"), to measure with a ruler that the pattern printed at its real size.
+  /// 50, 20 or 10 mm (2, 1 or 1/2 inch when `units` is `in`), the longest whose text ends before the
+  /// page number; none on margins under 4 mm (`Pattern_result::scale_check`)
+  bool scale_check = true;
   /// the most pages a pattern may take: at a scale that would need more (pieces larger than a
   /// page take a page per part), nothing is drawn and the writers return `INVALID_ARGUMENT`,
   /// with `Pattern_result::number_of_pages` at least the pages the layout needs
@@ -200,6 +206,9 @@ struct Pattern_result
   /// smaller side), since texts inside are at most a quarter (labels) or a third (numbers) of a
   /// piece's smaller side. A larger scale gives them room.
   std::vector<std::size_t> crowded_pieces;
+  /// the length of the scale check's bars (`Pattern_options::scale_check`), in drawing units; 0 where
+  /// none is drawn
+  double scale_check = 0;
   /// the largest label height, in drawing units: `Pattern_options::font_size`, or 1/60 of the page's
   /// smaller side
   double font_size = 0;

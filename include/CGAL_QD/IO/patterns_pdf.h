@@ -175,6 +175,22 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
     internal::show_centred_text(cr, {{{w / 2, page * ph + ph - d.page_margin / 2}},
                                      (std::min)(font * 0.8, 0.8 * d.page_margin), 0.,
                                      "page " + std::to_string(page + 1) + " of " + std::to_string(d.number_of_pages)});
+    // the scale check in the bottom-left corner, its bars ending where they
+    // measure
+    if(!d.check_lines.empty()) {
+      cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+      cairo_set_line_width(cr, line);
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+      for(const auto& l : d.check_lines) {
+        cairo_move_to(cr, l[0][0], page * ph + l[0][1]);
+        cairo_line_to(cr, l[1][0], page * ph + l[1][1]);
+      }
+      cairo_stroke(cr);
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+      Drawing::Text label = d.check_label;
+      label.at[1] += page * ph;
+      internal::show_centred_text(cr, label);
+    }
     for(const Drawing::Piece& piece : d.pieces) {
       if(piece.parts.empty()) {
         if(piece.page == page) internal::draw_piece(cr, piece, d);

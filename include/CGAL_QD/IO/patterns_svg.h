@@ -109,9 +109,11 @@ namespace IO {
 ///   seams with those joined before, and the labels of the seams it closes;
 ///   then the seams whose two sides differ by more than 0.5 % as drawn, each
 ///   with its two lengths, to be eased in (`Pattern_result::seams`);
+/// - unless `options.scale_check` is false, two bars of 50 mm (2 in) in the
+///   bottom-left corner of every page, in the margins, to measure the print;
 /// - labels at most `font_size` high and at most a quarter (seams) or a third
-///   (chart ids) of the piece's smaller side; lines at most 0.25 mm wide and
-///   at most 1/40 of the smallest piece's smaller side.
+///   (chart ids) of the piece's smaller side; lines 0.25 mm wide, and on a
+///   piece less than 10 mm across a fortieth of its smaller side.
 ///
 /// \param corner_uv 3 UVs per face by face index, in mesh units and with each chart's
 ///        border at its true length (`Segmentation_result::corner_uv`)
@@ -162,7 +164,8 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
   out << "<style>" << line_rules("", line) << ".page{fill:none;stroke:#ccc;stroke-width:" << n_(0.3 * mm) << "}"
       << "text{font-family:sans-serif;text-anchor:middle;dominant-baseline:middle}"
       << (d.assembly.empty() ? "" : "text.assembly{text-anchor:start}")
-      << (result.part_pages == 0 ? "" : ".frame{fill:none;stroke:#999;stroke-width:" + n_(0.5 * line) + "}.mark{fill:#595959}");
+      << (result.part_pages == 0 ? "" : ".frame{fill:none;stroke:#999;stroke-width:" + n_(0.5 * line) + "}.mark{fill:#595959}")
+      << (d.check_lines.empty() ? "" : ".check{stroke:#666;stroke-width:" + n_(line) + "}text.check{fill:#666;stroke:none}");
   // the thinner lines of the pieces less than 10 mm across
   for(const internal::Pattern_drawing::Piece& piece : d.pieces)
     if(piece.line_width < line)
@@ -173,6 +176,16 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
         << "\"/>\n<text class=\"page\" x=\"" << n_(w / 2) << "\" y=\"" << n_(p * ph + ph - d.page_margin / 2)
         << "\" font-size=\"" << n_((std::min)(font * 0.8, 0.8 * d.page_margin)) << "\">page " << p + 1
         << " of " << d.number_of_pages << "</text>\n";
+  // the scale check of every page, in its bottom-left corner
+  if(!d.check_lines.empty())
+    for(std::size_t p = 0; p < d.number_of_pages; ++p) {
+      out << "<g class=\"check\" data-length=\"" << n_(d.check_length) << "\">";
+      for(const auto& l : d.check_lines)
+        out << "<line x1=\"" << n_(l[0][0]) << "\" y1=\"" << n_(p * ph + l[0][1]) << "\" x2=\"" << n_(l[1][0])
+            << "\" y2=\"" << n_(p * ph + l[1][1]) << "\"/>";
+      out << "<text class=\"check\" x=\"" << n_(d.check_label.at[0]) << "\" y=\"" << n_(p * ph + d.check_label.at[1])
+          << "\" font-size=\"" << n_(d.check_label.size) << "\">" << d.check_label.text << "</text></g>\n";
+    }
 
   // a piece larger than a page is defined once and shown through the windows of its parts
   auto rect = [&](const std::array<double, 4>& r, const char* cls) {

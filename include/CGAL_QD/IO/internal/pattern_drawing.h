@@ -18,6 +18,7 @@
 #include <CGAL_QD/IO/internal/pattern_pieces.h>
 #include <CGAL_QD/IO/internal/pattern_scale.h>
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
+#include <CGAL_QD/IO/internal/scale_check.h>
 #include <CGAL_QD/IO/internal/seam_labels.h>
 #include <CGAL_QD/IO/internal/seam_notches.h>
 #include <CGAL_QD/IO/pattern_options.h>
@@ -307,6 +308,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   drawing.pieces.clear();
   drawing.assembly.clear();
   drawing.captions.clear();
+  drawing.check_lines.clear();
+  drawing.check_length = 0;
   for(std::size_t k : layout.order) {
     const internal::Piece_placement& p = place[k];
     const double side = smaller_side(k);
@@ -458,6 +461,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     lay_out_assembly_page(result.assembly, result.seams, options.units, result.number_of_pages, drawing);
     drawing.number_of_pages = ++result.number_of_pages;
   }
+  if(options.scale_check) lay_out_scale_check(drawing, options.units == "in");
+  result.scale_check = drawing.check_length;
   result.scale *= unit_scale;  // drawing units per unit of the input mesh
   return result;
 }

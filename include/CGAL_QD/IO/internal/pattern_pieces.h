@@ -65,6 +65,12 @@ struct Pattern_drawing
   std::vector<Piece> pieces;  // in drawing order
   std::vector<Text> assembly;  // the lines of the assembly page
   std::vector<Text> captions;  // on the pages of parts, in the top margin
+  // the scale check in the bottom-left corner of every page, in the first
+  // page's coordinates (internal/scale_check.h): its lines, their text, and
+  // the bars' length (0: none)
+  std::vector<std::array<P2, 2>> check_lines;
+  Text check_label;
+  double check_length = 0;
 };
 
 } // namespace internal
