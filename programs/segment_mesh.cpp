@@ -129,10 +129,22 @@ int main(int argc, char** argv)
   };
   if(!o.size.empty() && !((pattern.model_size = length(o.size)) > 0))
     return fail("--size: '" + o.size + "' is not a positive length such as 200mm, 20cm or 8in");
+  if(pattern.model_size > 0 && pattern.model_size * mm_per_unit < 1 - 1e-9)
+    return fail("--size: '" + o.size + "' is under 1 mm: too small to draw the pieces");
   if(!o.notches.empty() && !((pattern.notch_spacing = length(o.notches)) > 0))
     return fail("--notches: '" + o.notches + "' is not a positive length such as 50mm or 2in");
+  if(pattern.notch_spacing > 0 && pattern.notch_spacing * mm_per_unit < 1 - 1e-9)
+    return fail("--notches: '" + o.notches + "' is under 1 mm: notches so close could not be cut");
   if(!o.seam_allowance.empty() && !((pattern.seam_allowance = length(o.seam_allowance)) > 0))
     return fail("--seam-allowance: '" + o.seam_allowance + "' is not a positive length such as 6mm or 0.25in");
+  {  // room for a piece on a page, within the margins, with the space around it
+    const double around = pattern.spacing / 2 + (pattern.tabs ? pattern.tab_width : 0) + pattern.seam_allowance;
+    const double printable = (std::min)(pattern.page_width, pattern.page_height) - 2 * pattern.page_margin;
+    if(pattern.seam_allowance > 0 && !(2 * around < printable))
+      return fail("--seam-allowance: " + o.seam_allowance + " on each side of a piece" +
+                  (pattern.tabs ? ", with the glue tabs," : "") + " leaves it no room on the page (" + o.page + ", " +
+                  segment_mesh::text(printable) + ' ' + pattern.units + " between the margins): give a narrower one");
+  }
   {  // a length, or zero with or without a unit
     char* end = nullptr;
     const double value = std::strtod(o.min_loose_piece.c_str(), &end);
@@ -348,6 +360,12 @@ int main(int argc, char** argv)
     if(!pages && pages.status == CGAL_QD::Error_code::INVALID_ARGUMENT && pages.number_of_pages >= pattern.max_pages)
       return fail("the patterns would take " + std::to_string(pages.number_of_pages) + " pages or more (at most " +
                   std::to_string(pattern.max_pages) + "): give a smaller --size or --scale");
+    if(!pages && pages.status == CGAL_QD::Error_code::INVALID_ARGUMENT && pages.model_size * mm_per_unit < 1 - 1e-9)
+      return fail("the model would be " + segment_mesh::text(pages.model_size) + ' ' + pattern.units +
+                  " at its largest: too small to draw the pieces (1 mm at least); give a larger --scale");
+    // a pattern that cannot be drawn is not a directory that cannot be written
+    if(!pages && pages.status != CGAL_QD::Error_code::CANNOT_WRITE)
+      return fail(std::string("cannot draw the patterns: ") + CGAL_QD::error_message(pages.status));
     if(!ok || !files.commit()) return fail("cannot write into '" + o.out_dir + "'");
     std::ostringstream message;
     message << "  wrote charts.ply, atlas.obj, atlas.mtl (atlas coverage " << atlas.coverage << "), patterns.svg"

@@ -1561,11 +1561,46 @@ BOOST_AUTO_TEST_CASE(patterns_reject_bad_options)
   bad = QD::IO::Pattern_options();
   bad.page_width = 15;  // narrower than its margins
   expect_refused(bad);
+  // tabs that leave a piece no room between the margins (190 mm on A4): 3 mm
+  // of spacing and the tab on each side; with the scale given too
+  bad = QD::IO::Pattern_options();
+  bad.tabs = true;
+  bad.tab_width = 92;
+  expect_refused(bad);
+  bad.scale = 10;
+  expect_refused(bad);
+  // a model under a millimetre: refused, with its size
+  bad = QD::IO::Pattern_options();
+  bad.scale = 1e-300;
+  const QD::IO::Pattern_result tiny = QD::IO::write_patterns_SVG(
+      ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv, s.result.seam_edges, bad);
+  BOOST_TEST((tiny.status == QD::Error_code::INVALID_ARGUMENT));
+  BOOST_TEST((tiny.model_size > 0 && tiny.model_size < 1e-290));
+  bad.scale = 0;
+  bad.model_size = 0.999;
+  BOOST_TEST((QD::IO::write_patterns_SVG(ss, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                         s.result.seam_edges, bad)
+                  .status == QD::Error_code::INVALID_ARGUMENT));
+  bad.model_size = 1;
+  std::stringstream drawn;
+  BOOST_TEST(bool(QD::IO::write_patterns_SVG(drawn, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                             s.result.seam_edges, bad)));
+  bad = QD::IO::Pattern_options();
+  bad.tabs = true;
+  bad.scale = 10;
+  bad.tab_width = 91.9;  // room for a piece 0.2 mm wide
+  drawn.str("");
+  BOOST_TEST(bool(QD::IO::write_patterns_SVG(drawn, s.tm, boost::make_assoc_property_map(s.chart), s.result.corner_uv,
+                                             s.result.seam_edges, bad)));
   bad = QD::IO::Pattern_options();
   bad.units = "furlong";
   expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.notch_spacing = -5;
+  expect_refused(bad);
+  bad.notch_spacing = 0.999;  // under a millimetre
+  expect_refused(bad);
+  bad.notch_spacing = 1e-300;
   expect_refused(bad);
   bad = QD::IO::Pattern_options();
   bad.seam_allowance = std::numeric_limits<double>::quiet_NaN();

@@ -83,6 +83,12 @@ set(option_cases
   "--size 200mm --scale 3|--size excludes --scale"
   "--scale 0|--scale: '0' is not a positive number"
   "--page a9|--page: a9 not in"
+  "--seam-allowance 95mm|--seam-allowance: 95mm on each side of a piece leaves it no room on the page [(]a4, 190 mm between the margins[)]: give a narrower one"
+  "--tabs --seam-allowance 1e300mm|--seam-allowance: 1e300mm on each side of a piece, with the glue tabs, leaves it no room on the page [(]a4, 190 mm between the margins[)]"
+  "--notches 0.001mm|--notches: '0.001mm' is under 1 mm: notches so close could not be cut"
+  "--notches 1e-300mm|--notches: '1e-300mm' is under 1 mm"
+  "--size 0.5mm|--size: '0.5mm' is under 1 mm: too small to draw the pieces"
+  "--scale 1e-300|the model would be [0-9.e-]+ mm at its largest: too small to draw the pieces [(]1 mm at least[)]. give a larger --scale"
   "--size 100000000mm|the patterns would take [0-9]+ pages or more [(]at most 1000[)]: give a smaller --size or --scale"
 )
 set(k 0)

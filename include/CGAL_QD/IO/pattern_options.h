@@ -40,7 +40,9 @@ inline double millimetres_per_unit(const std::string& units)
 /// (`units`); the defaults are for millimetres.
 struct Pattern_options
 {
-  /// drawing units per mesh unit; 0 (the default): chosen from `model_size`
+  /// drawing units per mesh unit; 0 (the default): chosen from `model_size`. A scale at which the
+  /// model would be under 1 mm at its largest is refused (`INVALID_ARGUMENT`, with
+  /// `Pattern_result::model_size`): its lines would hide its pieces
   double scale = 0;
   /// with `scale` 0, the model's largest dimension (the longest side of the
   /// axis-aligned bounding box of the pieces drawn, without the loose pieces left
@@ -77,7 +79,8 @@ struct Pattern_options
   /// labels are made smaller where the piece is small
   double font_size = 0;
   /// notches across the cut line, into the piece, about this far apart along every seam (0: none):
-  /// the same number on the two sides of a seam, at the same fractions of their lengths, numbered
+  /// the same number on the two sides of a seam, at the same fractions of their lengths, numbered;
+  /// under 1 mm is refused (`INVALID_COORDINATES`): notches so close could not be cut
   double notch_spacing = 0;
   /// a seam allowance this wide around every piece (0: none): the cut line then runs this far outside
   /// the piece's border, which becomes a dashed stitch line; needs Clipper (`CGAL_QD_HAS_CLIPPER`)

@@ -122,7 +122,9 @@ namespace IO {
 /// \returns a `Pattern_result`; `EMPTY_MESH` without faces, `INVALID_COORDINATES` if
 ///          `corner_uv` has the wrong size or a non-finite value, the mesh has a non-finite
 ///          or only one point, or the options are negative, not finite, too small for the margins
-///          or of an unknown unit. Nothing is written then. `CANNOT_WRITE` if the stream fails.
+///          or of an unknown unit, or leave a piece no room within a page's margins (half the
+///          `spacing`, the `tab_width` with `tabs` and the `seam_allowance` on each side), or
+///          a `notch_spacing` under 1 mm. Nothing is written then. `CANNOT_WRITE` if the stream fails.
 template <class TriangleMesh, class FaceChartMap, class EdgeRange,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, const FaceChartMap& face_chart,
