@@ -357,6 +357,11 @@ int main(int argc, char** argv)
                 << segment_mesh::report(r, input, smoothing, segment_mesh::Pattern_report{&pages, pattern.units, pdf, pattern.seam_allowance, viewer})
                        .dump(2)
                 << "\n");
+    if(!pages && pages.status == CGAL_QD::Error_code::INVALID_ARGUMENT && pages.assembly_pages > 0 &&
+       pages.number_of_pages > pattern.max_pages)
+      return fail("the list of the " + std::to_string(pages.assembly.size()) + " pieces' assembly would take " +
+                  std::to_string(pages.assembly_pages) + " pages, the patterns " + std::to_string(pages.number_of_pages) +
+                  " (at most " + std::to_string(pattern.max_pages) + "): --no-assembly-page leaves it out");
     if(!pages && pages.status == CGAL_QD::Error_code::INVALID_ARGUMENT && pages.number_of_pages >= pattern.max_pages)
       return fail("the patterns would take " + std::to_string(pages.number_of_pages) + " pages or more (at most " +
                   std::to_string(pattern.max_pages) + "): give a smaller --size or --scale");

@@ -985,8 +985,86 @@ BOOST_AUTO_TEST_CASE(patterns_list_the_assembly_order)
     const QD::IO::Pattern_result pw =
         QD::IO::write_patterns_SVG(without, s.tm, chart, s.result.corner_uv, s.result.seam_edges, options);
     BOOST_TEST(pw.number_of_pages + 1 == pr.number_of_pages);
+    BOOST_TEST(pr.assembly_pages == 1u);
+    BOOST_TEST(pw.assembly_pages == 0u);
     BOOST_TEST(without.str().find("class=\"assembly\"") == std::string::npos);
   }
+}
+
+// A list too long for one page at half the largest label height goes on over
+// more pages at that height, each with its title, every line within its
+// page's margins; a pattern that would then take more than max_pages is
+// refused. A 30 x 30 grid of squares, every triangle a piece: 1,800 steps.
+BOOST_AUTO_TEST_CASE(patterns_list_a_long_assembly_over_several_pages)
+{
+  Surface_mesh tm;
+  const int n = 30;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) v.push_back(tm.add_vertex(Epick::Point_3(i, j, 0)));
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const auto a = v[j * (n + 1) + i], b = v[j * (n + 1) + i + 1], c = v[(j + 1) * (n + 1) + i + 1],
+                 d = v[(j + 1) * (n + 1) + i];
+      tm.add_face(a, b, c);
+      tm.add_face(a, c, d);
+    }
+  Chart_map chart;
+  std::vector<std::array<double, 2>> uv(3 * num_faces(tm));
+  for(auto f : faces(tm)) {
+    chart[f] = std::size_t(f);
+    int c = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const Epick::Point_3& p = tm.point(target(h, tm));
+      uv[3 * std::size_t(f) + c++] = {{p.x(), p.y()}};
+    }
+  }
+  std::vector<Surface_mesh::Edge_index> seams;
+  for(auto e : edges(tm))
+    if(!is_border(e, tm)) seams.push_back(e);
+  QD::IO::Pattern_options options;
+  std::stringstream ss;
+  const QD::IO::Pattern_result pr =
+      QD::IO::write_patterns_SVG(ss, tm, boost::make_assoc_property_map(chart), uv, seams, options);
+  BOOST_REQUIRE(pr);
+  BOOST_TEST(pr.assembly.size() == std::size_t(2 * n * n));
+  BOOST_TEST_MESSAGE(pr.number_of_pages << " pages, " << pr.assembly_pages << " of them the assembly");
+  BOOST_TEST(pr.assembly_pages > 1u);
+  const std::size_t first = pr.number_of_pages - pr.assembly_pages;  // the first page of the list
+  const double ph = options.page_height, m = options.page_margin, half_font = 0.5 * 210. / 60;
+  boost::property_tree::ptree tree;
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_xml(ss, tree));
+  std::vector<std::size_t> titles(pr.number_of_pages, 0), lines(pr.number_of_pages, 0);
+  for(const auto& node : tree.get_child("svg")) {
+    if(node.first != "text" || node.second.get<std::string>("<xmlattr>.class", "") != "assembly") continue;
+    const double y = node.second.get<double>("<xmlattr>.y"), size = node.second.get<double>("<xmlattr>.font-size");
+    const std::size_t page = static_cast<std::size_t>(y / ph);
+    BOOST_REQUIRE(page < pr.number_of_pages);
+    BOOST_TEST(page >= first);
+    BOOST_TEST(size >= half_font * (1 - 1e-6));  // never smaller than half the largest label height
+    BOOST_TEST((y - page * ph > m && (page + 1) * ph - y > m));
+    const std::string text = node.second.data();
+    if(text.rfind("Assembly", 0) == 0)
+      ++titles[page];
+    else
+      ++lines[page];
+  }
+  std::size_t total = 0;
+  for(std::size_t p = first; p < pr.number_of_pages; ++p) {
+    BOOST_TEST(titles[p] == 1u);
+    BOOST_TEST(lines[p] > 0u);
+    total += lines[p];
+  }
+  BOOST_TEST(total >= pr.assembly.size());  // a line per step at least
+  // a limit the list would pass: refused, with the pages it would take
+  options.max_pages = pr.number_of_pages - 1;
+  std::stringstream refused;
+  const QD::IO::Pattern_result pm =
+      QD::IO::write_patterns_SVG(refused, tm, boost::make_assoc_property_map(chart), uv, seams, options);
+  BOOST_TEST((pm.status == QD::Error_code::INVALID_ARGUMENT));
+  BOOST_TEST(pm.number_of_pages == pr.number_of_pages);
+  BOOST_TEST(pm.assembly_pages == pr.assembly_pages);
+  BOOST_TEST(refused.str().empty());
 }
 
 // Loose pieces too small to cut (the specks a scan leaves beside a model) are

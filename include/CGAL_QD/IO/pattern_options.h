@@ -94,7 +94,9 @@ struct Pattern_options
   /// the model), until every piece left out is shorter at the scale of the pieces drawn.
   /// 0 (the default): every piece is drawn
   double min_loose_piece_size = 0;
-  /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`)
+  /// a last page lists the order in which to join the pieces (`Pattern_result::assembly`), in up to
+  /// three columns made smaller until they fit, down to half the largest label height; a longer list
+  /// goes on over more pages at that height (`Pattern_result::assembly_pages`)
   bool assembly_page = true;
   /// a scale check in the bottom-left corner of every page, in the margins: two bars of the same
   /// length from the corner, along the bottom margin and up the left one, with their length written
@@ -103,8 +105,10 @@ struct Pattern_options
   /// page number; none on margins under 4 mm (`Pattern_result::scale_check`)
   bool scale_check = true;
   /// the most pages a pattern may take: at a scale that would need more (pieces larger than a
-  /// page take a page per part), nothing is drawn and the writers return `INVALID_ARGUMENT`,
-  /// with `Pattern_result::number_of_pages` at least the pages the layout needs
+  /// page take a page per part), or with an assembly list that would take the pattern beyond them,
+  /// nothing is drawn and the writers return `INVALID_ARGUMENT`, with
+  /// `Pattern_result::number_of_pages` at least the pages the layout needs (and
+  /// `Pattern_result::assembly_pages` those of the list)
   std::size_t max_pages = 1000;
 };
 
@@ -182,6 +186,9 @@ struct Pattern_result
   /// than the one of the default model size, so that every piece fits on a page
   bool reduced_to_fit = false;
   std::size_t number_of_pages = 0;
+  /// the pages of the assembly list, the last ones (`Pattern_options::assembly_page`): one, or more
+  /// where the list would be under half the largest label height on one
+  std::size_t assembly_pages = 0;
   std::size_t number_of_charts = 0;  ///< the pieces drawn
   /// the loose pieces left out (`Pattern_options::min_loose_piece_size`), by chart id
   std::vector<std::size_t> left_out_pieces;

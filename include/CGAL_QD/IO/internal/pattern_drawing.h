@@ -467,8 +467,13 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   for(const Pattern_drawing::Piece& piece : drawing.pieces) result.part_pages += piece.parts.size();
   result.number_of_pages = drawing.number_of_pages = pages;
   if(options.assembly_page && !result.assembly.empty()) {
-    lay_out_assembly_page(result.assembly, result.seams, options.units, result.number_of_pages, drawing);
-    drawing.number_of_pages = ++result.number_of_pages;
+    result.assembly_pages =
+        lay_out_assembly_pages(result.assembly, result.seams, options.units, result.number_of_pages, drawing);
+    drawing.number_of_pages = result.number_of_pages += result.assembly_pages;
+    if(result.number_of_pages > options.max_pages) {
+      result.status = Error_code::INVALID_ARGUMENT;  // a list of many thousand pieces
+      return result;
+    }
   }
   if(options.scale_check) lay_out_scale_check(drawing, options.units == "in");
   result.scale_check = drawing.check_length;
