@@ -110,8 +110,8 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   // notches a millimetre apart at least (closer ones could not be cut)
   valid = valid && (options.notch_spacing == 0 || options.notch_spacing * mm_per_unit >= 1 - 1e-9);
   // the spacing, tabs and seam allowance around a piece leave it room on a page
-  const double around = options.spacing / 2 + (options.tabs ? options.tab_width : 0) + options.seam_allowance;
-  valid = valid && 2 * around < (std::min)(options.page_width, options.page_height) - 2 * options.page_margin;
+  const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0) + options.seam_allowance;
+  valid = valid && 2 * pad < (std::min)(options.page_width, options.page_height) - 2 * options.page_margin;
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
     valid = std::isfinite(corner_uv[i][0]) && std::isfinite(corner_uv[i][1]);
   // the box of a vertex's point, as doubles (not `Point_3::bbox()`, an
@@ -177,7 +177,6 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
     boxes[k] = internal::min_area_rectangle(points);
     used[k] = true;
   }
-  const double pad = around;
   // the scale, from the 3D bounding box of the pieces drawn, and the loose
   // pieces left out (each a whole connected component of the mesh)
   std::vector<CGAL::Bbox_3> box_3d(n);  // empty

@@ -47,7 +47,7 @@ void lay_out_scale_check(Drawing& d, bool inches)
     const std::string text = std::string(names[i]) + " at 100 %";
     const double text_width = 0.7 * size * double(text.size());
     if(x0 + length + 0.5 * size + text_width > number_left - size) continue;  // meets the page number
-    if(y0 - length < m / 2) continue;                                            // beyond the left margin
+    if(y0 - length < m / 2) continue;                                            // taller than the page
     d.check_lines.push_back({{P2{{x0, y0}}, P2{{x0 + length, y0}}}});
     d.check_lines.push_back({{P2{{x0, y0}}, P2{{x0, y0 - length}}}});
     const double step = (inches ? 0.25 : (lengths[i] >= 50 ? 10. : 5.)) * unit;
