@@ -398,7 +398,10 @@ int main(int argc, char** argv)
     if(pdf && pages.scale_check > 0)
       message << "  print          patterns.pdf at 100 % (\"actual size\", not fit to page): the bars in the "
                  "bottom-left corner of every page are then "
-              << segment_mesh::text(pages.scale_check) << ' ' << pattern.units << " long\n";
+              << (pattern.units == "in" || pattern.units == "cm"
+                      ? segment_mesh::text(pages.scale_check) + ' ' + pattern.units
+                      : segment_mesh::text(pages.scale_check * mm_per_unit) + " mm")  // as the bars say
+              << " long\n";
     // the pieces too small at this size for their labels
     if(!pages.crowded_pieces.empty()) {
       const std::size_t count = pages.crowded_pieces.size(), listed = (std::min)(count, std::size_t(12));
