@@ -724,7 +724,7 @@ BOOST_AUTO_TEST_CASE(patterns_carry_a_scale_check_on_every_page)
         BOOST_TEST(vertical == length, tt::tolerance(1e-9));
         BOOST_TEST(lines >= 6u);  // two bars and ticks
         BOOST_TEST(label == text);
-        BOOST_TEST(label_y == ph - m / 2, tt::tolerance(1e-9));
+        BOOST_TEST(label_y == ph - 0.65 * m, tt::tolerance(1e-9));
       }
       BOOST_TEST(groups == (length > 0 ? pr.number_of_pages : 0u));
     }

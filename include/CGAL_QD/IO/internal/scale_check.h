@@ -36,7 +36,9 @@ void lay_out_scale_check(Drawing& d, bool inches)
   const std::string number = "page " + std::to_string(d.number_of_pages) + " of " + std::to_string(d.number_of_pages);
   // texts are at most 0.7 of their height wide per character (label_placement.h)
   const double number_left = d.page_width / 2 - 0.35 * size * double(number.size());
-  const double x0 = m / 2, y0 = d.page_height - m / 2, tick = (std::min)(0.3 * m, 3 * mm);
+  // 0.65 of the margin from the paper's edges, where few printers cannot
+  // print, the ticks into the page up to 0.9 of it
+  const double x0 = 0.65 * m, y0 = d.page_height - 0.65 * m, tick = (std::min)(0.25 * m, 2.5 * mm);
   const std::array<double, 3> lengths = inches ? std::array<double, 3>{{2., 1., 0.5}}
                                                : std::array<double, 3>{{50., 20., 10.}};
   const std::array<const char*, 3> names = inches ? std::array<const char*, 3>{{"2 in", "1 in", "1/2 in"}}
@@ -47,7 +49,7 @@ void lay_out_scale_check(Drawing& d, bool inches)
     const std::string text = std::string(names[i]) + " at 100 %";
     const double text_width = 0.7 * size * double(text.size());
     if(x0 + length + 0.5 * size + text_width > number_left - size) continue;  // meets the page number
-    if(y0 - length < m / 2) continue;                                            // taller than the page
+    if(y0 - length < m) continue;                                                // taller than the page
     d.check_lines.push_back({{P2{{x0, y0}}, P2{{x0 + length, y0}}}});
     d.check_lines.push_back({{P2{{x0, y0}}, P2{{x0, y0 - length}}}});
     const double step = (inches ? 0.25 : (lengths[i] >= 50 ? 10. : 5.)) * unit;
