@@ -138,7 +138,7 @@ int main(int argc, char** argv)
   if(!o.seam_allowance.empty() && !((pattern.seam_allowance = length(o.seam_allowance)) > 0))
     return fail("--seam-allowance: '" + o.seam_allowance + "' is not a positive length such as 6mm or 0.25in");
   {  // room for a piece on a page, within the margins, with the space around it
-    const double around = pattern.spacing / 2 + (pattern.tabs ? pattern.tab_width : 0) + pattern.seam_allowance;
+    const double around = pattern.space_around_piece();
     const double printable = (std::min)(pattern.page_width, pattern.page_height) - 2 * pattern.page_margin;
     if(pattern.seam_allowance > 0 && !(2 * around < printable))
       return fail("--seam-allowance: " + o.seam_allowance + " on each side of a piece" +

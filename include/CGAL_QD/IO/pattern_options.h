@@ -110,6 +110,11 @@ struct Pattern_options
   /// `Pattern_result::number_of_pages` at least the pages the layout needs (and
   /// `Pattern_result::assembly_pages` those of the list)
   std::size_t max_pages = 1000;
+
+  /// the room the layout keeps around every piece, on each side: half the `spacing`, the
+  /// `tab_width` with `tabs`, and the `seam_allowance`. Twice this must be less than the page's
+  /// smaller side within its margins, or the writers refuse the options
+  double space_around_piece() const { return spacing / 2 + (tabs ? tab_width : 0) + seam_allowance; }
 };
 
 /// \ingroup PkgCGAL_QDRef

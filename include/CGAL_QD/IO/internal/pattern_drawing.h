@@ -110,7 +110,7 @@ IO::Pattern_result draw_pattern(const TriangleMesh& tm, const FaceChartMap& face
   // notches a millimetre apart at least (closer ones could not be cut)
   valid = valid && (options.notch_spacing == 0 || options.notch_spacing * mm_per_unit >= 1 - 1e-9);
   // the spacing, tabs and seam allowance around a piece leave it room on a page
-  const double pad = options.spacing / 2 + (options.tabs ? options.tab_width : 0) + options.seam_allowance;
+  const double pad = options.space_around_piece();
   valid = valid && 2 * pad < (std::min)(options.page_width, options.page_height) - 2 * options.page_margin;
   for(std::size_t i = 0; valid && i < corner_uv.size(); ++i)
     valid = std::isfinite(corner_uv[i][0]) && std::isfinite(corner_uv[i][1]);
