@@ -157,7 +157,7 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
   Pattern_result result = internal::draw_pattern(tm, face_chart, corner_uv, seam_edges, options, np, d);
   if(!result) return result;
   const double points = 72 / 25.4 * millimetres_per_unit(d.units);  // per drawing unit
-  const double w = d.page_width, ph = d.page_height, line = d.line_width, font = d.font_size;
+  const double w = d.page_width, ph = d.page_height, line = d.line_width;
   cairo_surface_t* surface =
       cairo_pdf_surface_create_for_stream(internal::write_to_stream, &out, w * points, ph * points);
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "CGAL_QD pattern");
@@ -173,8 +173,7 @@ Pattern_result write_patterns_PDF(std::ostream& out, const TriangleMesh& tm, con
     // the page number, light, in the bottom margin
     cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
     internal::show_centred_text(cr, {{{w / 2, page * ph + ph - d.page_margin / 2}},
-                                     (std::min)(font * 0.8, 0.8 * d.page_margin), 0.,
-                                     "page " + std::to_string(page + 1) + " of " + std::to_string(d.number_of_pages)});
+                                     d.page_number_size(), 0., d.page_number(page)});
     // the scale check in the bottom-left corner, its bars ending where they
     // measure
     if(!d.check_lines.empty()) {

@@ -135,7 +135,7 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
   internal::Pattern_drawing d;
   Pattern_result result = internal::draw_pattern(tm, face_chart, corner_uv, seam_edges, options, np, d);
   if(!result) return result;
-  const double w = d.page_width, ph = d.page_height, line = d.line_width, mm = d.millimetre, font = d.font_size;
+  const double w = d.page_width, ph = d.page_height, line = d.line_width, mm = d.millimetre;
   const bool any_parts = result.part_pages > 0;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\""
@@ -176,8 +176,7 @@ Pattern_result write_patterns_SVG(std::ostream& out, const TriangleMesh& tm, con
   for(std::size_t p = 0; p < d.number_of_pages; ++p)
     out << "<rect class=\"page\" x=\"0\" y=\"" << n_(p * ph) << "\" width=\"" << n_(w) << "\" height=\"" << n_(ph)
         << "\"/>\n<text class=\"page\" x=\"" << n_(w / 2) << "\" y=\"" << n_(p * ph + ph - d.page_margin / 2)
-        << "\" font-size=\"" << n_((std::min)(font * 0.8, 0.8 * d.page_margin)) << "\">page " << p + 1
-        << " of " << d.number_of_pages << "</text>\n";
+        << "\" font-size=\"" << n_(d.page_number_size()) << "\">" << d.page_number(p) << "</text>\n";
   // the scale check of every page, in its bottom-left corner
   if(!d.check_lines.empty())
     for(std::size_t p = 0; p < d.number_of_pages; ++p) {

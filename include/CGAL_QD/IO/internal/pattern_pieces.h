@@ -12,6 +12,7 @@
 
 #include <CGAL_QD/IO/internal/pattern_tiles.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <string>
@@ -71,6 +72,14 @@ struct Pattern_drawing
   std::vector<std::array<P2, 2>> check_lines;
   Text check_label;
   double check_length = 0;
+
+  // the number of page `page` (from 0), light, centred in the bottom margin,
+  // and its height
+  std::string page_number(std::size_t page) const
+  {
+    return "page " + std::to_string(page + 1) + " of " + std::to_string(number_of_pages);
+  }
+  double page_number_size() const { return (std::min)(0.8 * font_size, 0.8 * page_margin); }
 };
 
 } // namespace internal

@@ -32,8 +32,8 @@ void lay_out_scale_check(Drawing& d, bool inches)
   const double mm = d.millimetre, m = d.page_margin;
   if(!(m >= 4 * mm)) return;
   // the height of the page number, which the text shares
-  const double size = (std::min)(0.8 * d.font_size, 0.8 * m);
-  const std::string number = "page " + std::to_string(d.number_of_pages) + " of " + std::to_string(d.number_of_pages);
+  const double size = d.page_number_size();
+  const std::string number = d.page_number(d.number_of_pages - 1);  // the widest
   // texts are at most 0.7 of their height wide per character (label_placement.h)
   const double number_left = d.page_width / 2 - 0.35 * size * double(number.size());
   // 0.65 of the margin from the paper's edges, where few printers cannot
